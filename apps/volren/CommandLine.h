@@ -1,0 +1,40 @@
+#pragma once
+#include <osg/Vec3d>
+
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace volren::app {
+
+/// A usage error: bad or missing command-line argument (exit code 2).
+struct UsageError : std::runtime_error
+{
+    using std::runtime_error::runtime_error;
+};
+
+/// Options of `volren render` (and `volren view`).
+struct RenderOptions
+{
+    std::string input;                      ///< scene or volume file; empty = the default scene
+    std::string output;                     ///< image file (extension picks the format)
+    int width = 512, height = 512;          ///< --size WxH
+    std::optional<osg::Vec3d> eye, center, up;  ///< --eye/--center/--up
+    std::optional<double> fov;              ///< --fov DEG (vertical)
+    std::optional<double> orthoHeight;      ///< --ortho HEIGHT (world units, visible height)
+    std::string tfFile;                     ///< --tf FILE.tf
+    osg::Vec3d background{0.0, 0.0, 0.0};   ///< --background r,g,b in [0,1]
+    std::vector<std::pair<std::string, std::string>> settings;  ///< --set KEY=VALUE
+    int frames = 1;                         ///< --frames N
+    std::string statsFile;                  ///< --stats FILE.json
+};
+
+/// Parses the arguments after `render`; throws UsageError naming the bad argument.
+RenderOptions parseRenderOptions(const std::vector<std::string>& args, bool requireOutput);
+
+/// Parses "x,y,z" (finite numbers); throws UsageError mentioning `what`.
+osg::Vec3d parseVec3(const std::string& text, const std::string& what);
+
+}  // namespace volren::app

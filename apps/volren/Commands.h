@@ -1,0 +1,14 @@
+#pragma once
+#include <string>
+#include <vector>
+
+namespace volren::app {
+
+/// `volren render INPUT -o OUT [...]` (and `volren` alone); returns the exit code.
+int renderCommand(const std::vector<std::string>& args, bool defaultRun);
+/// `volren info VOLUMEFILE`; returns the exit code.
+int infoCommand(const std::vector<std::string>& args);
+/// `volren view [INPUT]`: an interactive window; returns the exit code.
+int viewCommand(const std::vector<std::string>& args);
+
+}  // namespace volren::app

@@ -1,0 +1,77 @@
+#include "Commands.h"
+#include "ImageWriter.h"
+#include "SceneSetup.h"
+
+#include <volume_renderer/OffscreenRenderer.h>
+
+#include <nlohmann/json.hpp>
+#include <osgDB/FileNameUtils>
+#include <osgDB/FileUtils>
+
+#include <algorithm>
+#include <fstream>
+#include <iostream>
+
+namespace volren::app {
+
+namespace {
+
+double median(std::vector<double> v)
+{
+    if (v.empty()) return 0.0;
+    std::sort(v.begin(), v.end());
+    const std::size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+}  // namespace
+
+int renderCommand(const std::vector<std::string>& args, bool defaultRun)
+{
+    RenderOptions options = parseRenderOptions(args, !defaultRun);
+    if (defaultRun) options.output = "volren.png";
+    const std::string input = options.input.empty() ? defaultInput() : options.input;
+
+    osg::ref_ptr<osg::Node> scene = loadScene(options);
+    OffscreenRenderer renderer(options.width, options.height);
+    renderer.setScene(scene.get());
+    renderer.setBackground(osg::Vec3(options.background));
+    setUpCamera(*renderer.camera(), *scene, options, double(options.width) / options.height);
+
+    std::vector<FrameTiming> frames;
+    for (int i = 0; i < options.frames; ++i) frames.push_back(renderer.renderFrame());
+    writeImage(*renderer.image(), options.output);
+
+    if (!options.statsFile.empty()) {
+        nlohmann::json stats;
+        stats["input"] = input;
+        stats["output"] = options.output;
+        stats["width"] = options.width;
+        stats["height"] = options.height;
+        stats["context"] = renderer.contextDescription();
+        stats["composition_keys"] = renderer.volumeScene()->compositionKeys();
+        std::vector<double> cpu, gpu;
+        nlohmann::json perFrame = nlohmann::json::array();
+        for (const FrameTiming& f : frames) {
+            perFrame.push_back({{"cpu_ms", f.cpuMs}, {"gpu_ms", f.gpuMs >= 0 ? nlohmann::json(f.gpuMs) : nlohmann::json()}});
+            cpu.push_back(f.cpuMs);
+            if (f.gpuMs >= 0) gpu.push_back(f.gpuMs);
+        }
+        stats["frames"] = perFrame;
+        // The first frame pays for shader compilation and uploads; medians skip it when there are more.
+        auto steady = [](const std::vector<double>& v) {
+            return v.size() > 1 ? std::vector<double>(v.begin() + 1, v.end()) : v;
+        };
+        stats["cpu_ms_median"] = median(steady(cpu));
+        stats["gpu_ms_median"] = gpu.empty() ? nlohmann::json() : nlohmann::json(median(steady(gpu)));
+        std::ofstream out(options.statsFile);
+        out << stats.dump(2) << "\n";
+        if (!out) throw std::runtime_error(options.statsFile + ": cannot write statistics");
+    }
+
+    std::cout << "volren: wrote " << osgDB::getRealPath(options.output) << " (" << options.width << "x"
+              << options.height << ", " << input << ")" << std::endl;
+    return 0;
+}
+
+}  // namespace volren::app

@@ -1,0 +1,48 @@
+#include "Commands.h"
+#include "SceneSetup.h"
+
+#include <volume_renderer/VolumeScene.h>
+
+#include <osgGA/TrackballManipulator>
+#include <osgViewer/Viewer>
+#include <osgViewer/ViewerEventHandlers>
+
+#include <cstdlib>
+#include <iostream>
+
+namespace volren::app {
+
+int viewCommand(const std::vector<std::string>& args)
+{
+    const RenderOptions options = parseRenderOptions(args, false);
+    const char* display = std::getenv("DISPLAY");
+    if (!display || !*display)
+        throw std::runtime_error("volren view needs a display and DISPLAY is not set; use 'volren render' for images");
+
+    osg::ref_ptr<osg::Node> scene = loadScene(options);
+    osg::ref_ptr<VolumeScene> root = dynamic_cast<VolumeScene*>(scene.get());
+    if (!root) {
+        root = new VolumeScene;
+        root->addChild(scene.get());
+    }
+    osgViewer::Viewer viewer;
+    viewer.setThreadingModel(osgViewer::ViewerBase::SingleThreaded);
+    viewer.setUpViewInWindow(50, 50, options.width, options.height);
+    viewer.setSceneData(root.get());
+    viewer.setCameraManipulator(new osgGA::TrackballManipulator);
+    viewer.addEventHandler(new osgViewer::StatsHandler);          // 's': frame time
+    viewer.addEventHandler(new osgViewer::ScreenCaptureHandler);  // 'c': screenshot
+    viewer.getCamera()->setClearColor(osg::Vec4(options.background, 1.0f));
+    viewer.realize();
+    if (!viewer.isRealized()) throw std::runtime_error("volren view: cannot open a window on display " + std::string(display));
+    osgViewer::ViewerBase::Contexts contexts;
+    viewer.getContexts(contexts);
+    for (osg::GraphicsContext* gc : contexts) {
+        gc->getState()->setUseModelViewAndProjectionUniforms(true);
+        gc->getState()->setUseVertexAttributeAliasing(true);
+    }
+    std::cout << "volren view: 's' shows frame times, 'c' saves a screenshot, Esc quits" << std::endl;
+    return viewer.run();
+}
+
+}  // namespace volren::app

@@ -1,0 +1,45 @@
+// volren: render volumes in OpenSceneGraph scenes, headless or in a window.
+#include "CommandLine.h"
+#include "Commands.h"
+
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace {
+
+const char* const usage =
+    "usage:\n"
+    "  volren                          render the default scene to volren.png\n"
+    "  volren render INPUT -o OUT.png [--size WxH] [--eye x,y,z --center x,y,z --up x,y,z]\n"
+    "                [--fov DEG | --ortho HEIGHT] [--tf FILE.tf] [--background r,g,b]\n"
+    "                [--set KEY=VALUE ...] [--frames N] [--stats FILE.json]\n"
+    "  volren info VOLUMEFILE          dims, type, spacing, value range, histogram\n"
+    "  volren view [INPUT] [options]   interactive window (needs a display)\n"
+    "settings (--set): sampleFactor, sampleDistance, earlyTermination, jitter\n";
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+    std::vector<std::string> args(argv + 1, argv + argc);
+    const std::string command = args.empty() ? "" : args.front();
+    if (!args.empty()) args.erase(args.begin());
+    try {
+        if (command.empty()) return volren::app::renderCommand({}, true);
+        if (command == "render") return volren::app::renderCommand(args, false);
+        if (command == "info") return volren::app::infoCommand(args);
+        if (command == "view") return volren::app::viewCommand(args);
+        if (command == "-h" || command == "--help" || command == "help") {
+            std::cout << usage;
+            return 0;
+        }
+        throw volren::app::UsageError("unknown command '" + command + "'");
+    } catch (const volren::app::UsageError& e) {
+        std::cerr << "volren: " << e.what() << "\n" << usage;
+        return 2;
+    } catch (const std::exception& e) {
+        std::cerr << "volren: error: " << e.what() << std::endl;
+        return 1;
+    }
+}

@@ -1,0 +1,101 @@
+#pragma once
+#include <volume_model/Histogram.h>
+#include <volume_model/VoxelType.h>
+
+#include <osg/Object>
+#include <osg/Vec3d>
+#include <osg/Vec3i>
+
+#include <cstdint>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace volren {
+
+/// A scalar voxel grid: stored values, geometry and the mapping to data units. No GL.
+/// Voxel (i,j,k) is at index i + dims.x*(j + dims.y*k); data value = stored*slope + intercept.
+class Volume : public osg::Object
+{
+public:
+    Volume();
+    Volume(const Volume& other, const osg::CopyOp& copyop = osg::CopyOp::SHALLOW_COPY);
+    META_Object(volren, Volume)
+
+    /// Largest number of voxels accepted (2^34); larger requests are refused, not attempted.
+    static constexpr std::uint64_t maxVoxels = std::uint64_t(1) << 34;
+
+    /// Allocates zeroed voxels; throws std::invalid_argument for non-positive or too large dims.
+    void allocate(VoxelType type, const osg::Vec3i& dims);
+    /// Takes ownership of `bytes` as the voxels (no copy); throws std::invalid_argument when
+    /// dims are invalid or bytes.size() != voxel count * voxel size.
+    void assign(VoxelType type, const osg::Vec3i& dims, std::vector<std::uint8_t>&& bytes);
+    /// Voxel count of `dims`, or an exception naming the problem (non-positive, over maxVoxels).
+    static std::uint64_t checkedVoxelCount(const osg::Vec3i& dims);
+
+    VoxelType type() const { return _type; }          ///< stored voxel type
+    const osg::Vec3i& dims() const { return _dims; }  ///< voxels along x, y, z
+    std::size_t voxelCount() const;                    ///< dims.x * dims.y * dims.z
+    std::size_t byteSize() const { return _data.size(); }  ///< bytes of voxel storage
+    const std::uint8_t* data() const { return _data.data(); }  ///< raw stored voxels
+    std::uint8_t* data() { return _data.data(); }  ///< writable voxels; call dirty() after writing
+
+    /// World size of one voxel along x, y, z (positive, finite).
+    const osg::Vec3d& spacing() const { return _spacing; }
+    /// Sets the spacing; throws std::invalid_argument unless all components are positive and finite.
+    void setSpacing(const osg::Vec3d& spacing);
+    /// Smallest component of the spacing: the reference segment length of TF opacity.
+    double minSpacing() const;
+    /// World size of the whole box: dims * spacing.
+    osg::Vec3d worldSize() const;
+
+    /// Linear map from stored values to data units (e.g. NIfTI scl_slope/scl_inter).
+    void setRescale(double slope, double intercept);
+    double rescaleSlope() const { return _slope; }          ///< data = stored*slope + intercept
+    double rescaleIntercept() const { return _intercept; }  ///< data = stored*slope + intercept
+
+    /// Stored value of voxel index `i` (no rescale).
+    double storedValue(std::size_t i) const;
+    /// Data value of voxel index `i` (after rescale).
+    double value(std::size_t i) const { return storedValue(i) * _slope + _intercept; }
+    /// Data value at voxel (x,y,z).
+    double value(int x, int y, int z) const;
+
+    /// Smallest and largest finite data values (NaN and Inf voxels are ignored).
+    std::pair<double, double> valueRange() const;
+    /// Number of NaN or Inf voxels.
+    std::uint64_t nonFiniteCount() const;
+    /// Histogram of finite data values over valueRange() with `bins` bins (cached per bin count).
+    Histogram histogram(std::size_t bins = 256) const;
+
+    /// File this volume was read from (empty when built in memory).
+    std::string sourceFile;
+
+    /// Marks voxels or mapping as changed: drops cached statistics, bumps the modified count.
+    void dirty();
+    /// Incremented on every change; the renderer re-uploads when it differs from its copy.
+    unsigned int modifiedCount() const { return _modifiedCount; }
+
+private:
+    void computeStatistics() const;
+
+    VoxelType _type = VoxelType::UInt8;
+    osg::Vec3i _dims{0, 0, 0};
+    osg::Vec3d _spacing{1.0, 1.0, 1.0};
+    double _slope = 1.0;
+    double _intercept = 0.0;
+    std::vector<std::uint8_t> _data;
+    unsigned int _modifiedCount = 0;
+
+    struct Statistics
+    {
+        double minStored = 0.0, maxStored = 0.0;
+        std::uint64_t nonFinite = 0;
+    };
+    mutable std::mutex _statsMutex;
+    mutable std::optional<Statistics> _stats;
+    mutable std::optional<Histogram> _histogram;
+};
+
+}  // namespace volren

@@ -1,0 +1,46 @@
+#include <volume_model/AutoTransferFunction.h>
+#include <volume_model/DefaultScene.h>
+
+#include <osg/LightSource>
+#include <osg/NodeVisitor>
+
+namespace volren {
+
+osg::ref_ptr<osg::Group> makeDefaultScene(Volume* volume)
+{
+    osg::ref_ptr<osg::Group> root = new osg::Group;
+    root->setName("volren default scene");
+
+    osg::ref_ptr<osg::LightSource> headlight = new osg::LightSource;
+    headlight->setName("headlight");
+    headlight->setReferenceFrame(osg::LightSource::ABSOLUTE_RF);  // eye coordinates: moves with the camera
+    headlight->getLight()->setLightNum(0);
+    headlight->getLight()->setPosition(osg::Vec4(0.0f, 0.0f, 1.0f, 0.0f));  // directional, along the view
+    root->addChild(headlight);
+
+    osg::ref_ptr<VolumeNode> node = new VolumeNode;
+    node->setName(volume->sourceFile.empty() ? std::string("volume") : volume->sourceFile);
+    node->setVolume(volume);
+    node->setTransferFunction(makeTransferFunctionFromHistogram(*volume));
+    root->addChild(node);
+    return root;
+}
+
+VolumeNode* findFirstVolumeNode(osg::Node* root)
+{
+    struct Finder : osg::NodeVisitor
+    {
+        Finder() : osg::NodeVisitor(TRAVERSE_ALL_CHILDREN) {}
+        VolumeNode* found = nullptr;
+        void apply(osg::Node& node) override
+        {
+            if (found) return;
+            if (auto* v = dynamic_cast<VolumeNode*>(&node)) found = v;
+            else traverse(node);
+        }
+    } finder;
+    if (root) root->accept(finder);
+    return finder.found;
+}
+
+}  // namespace volren

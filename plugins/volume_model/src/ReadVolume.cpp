@@ -1,0 +1,80 @@
+#include <volume_model/ReadVolume.h>
+
+#include <osgDB/FileNameUtils>
+#include <osgDB/FileUtils>
+#include <osgDB/Registry>
+
+#include <cstdlib>
+#include <dlfcn.h>
+#include <mutex>
+#include <stdexcept>
+
+namespace volren {
+
+namespace {
+
+/// Folder holding this shared library (lib/ of the build or install tree).
+std::string libraryDirectory()
+{
+    Dl_info info{};
+    if (dladdr(reinterpret_cast<void*>(&libraryDirectory), &info) && info.dli_fname)
+        return osgDB::getFilePath(osgDB::getRealPath(info.dli_fname));
+    return {};
+}
+
+const char* const volumeExtensions[] = {"nii"};
+
+}  // namespace
+
+void registerPluginPath()
+{
+    static std::once_flag once;
+    std::call_once(once, [] {
+        const std::string dir = libraryDirectory();
+        if (dir.empty()) return;
+        auto& paths = osgDB::Registry::instance()->getLibraryFilePathList();
+        if (std::find(paths.begin(), paths.end(), dir) == paths.end()) paths.push_front(dir);
+    });
+}
+
+std::string shareDirectory()
+{
+    if (const char* env = std::getenv("VOLREN_SHARE_DIR"); env && *env) return env;
+    return osgDB::concatPaths(osgDB::getFilePath(libraryDirectory()), "share/volren");
+}
+
+std::string volumeFileExtension(const std::string& path)
+{
+    std::string ext = osgDB::getLowerCaseFileExtension(path);
+    if (ext == "gz") ext = osgDB::getLowerCaseFileExtension(osgDB::getNameLessExtension(path));
+    return ext;
+}
+
+bool isVolumeFile(const std::string& path)
+{
+    const std::string ext = volumeFileExtension(path);
+    for (const char* known : volumeExtensions)
+        if (ext == known) return true;
+    return false;
+}
+
+osg::ref_ptr<Volume> readVolumeFile(const std::string& path, const osgDB::Options* options)
+{
+    registerPluginPath();
+    if (!osgDB::fileExists(path)) throw std::runtime_error(path + ": no such file");
+    if (osgDB::fileType(path) == osgDB::DIRECTORY) throw std::runtime_error(path + ": is a directory, not a volume file");
+    const std::string ext = volumeFileExtension(path);
+    osgDB::ReaderWriter* rw = osgDB::Registry::instance()->getReaderWriterForExtension(ext);
+    if (!rw) throw std::runtime_error(path + ": no volume reader for extension '" + ext + "'");
+    osgDB::ReaderWriter::ReadResult result = rw->readObject(path, options);
+    if (!result.success()) {
+        std::string why = result.message();
+        if (why.empty()) why = "reader for '" + ext + "' failed (status " + std::to_string(int(result.status())) + ")";
+        throw std::runtime_error(why.find(path) == std::string::npos ? path + ": " + why : why);
+    }
+    osg::ref_ptr<Volume> volume = dynamic_cast<Volume*>(result.getObject());
+    if (!volume) throw std::runtime_error(path + ": reader did not return a volume");
+    return volume;
+}
+
+}  // namespace volren

@@ -1,0 +1,114 @@
+#include <volume_model/TransferFunction.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace volren {
+
+TransferFunction::TransferFunction() = default;
+
+TransferFunction::TransferFunction(const TransferFunction& other, const osg::CopyOp& copyop)
+    : osg::Object(other, copyop),
+      _points(other._points),
+      _hasDomain(other._hasDomain),
+      _domainMin(other._domainMin),
+      _domainMax(other._domainMax),
+      _resolution(other._resolution)
+{
+}
+
+void TransferFunction::setPoint(double value, const osg::Vec4& rgba)
+{
+    if (!std::isfinite(value)) throw std::invalid_argument("transfer-function point value must be finite");
+    for (int c = 0; c < 4; ++c)
+        if (!(rgba[c] >= 0.0f && rgba[c] <= 1.0f))
+            throw std::invalid_argument("transfer-function colour at value " + std::to_string(value) +
+                                        " has component " + std::to_string(rgba[c]) + " outside [0,1]");
+    _points[value] = rgba;
+    ++_modifiedCount;
+}
+
+bool TransferFunction::removePoint(double value)
+{
+    if (_points.erase(value) == 0) return false;
+    ++_modifiedCount;
+    return true;
+}
+
+void TransferFunction::assign(const TransferFunction& other)
+{
+    _points = other._points;
+    _hasDomain = other._hasDomain;
+    _domainMin = other._domainMin;
+    _domainMax = other._domainMax;
+    _resolution = other._resolution;
+    ++_modifiedCount;
+}
+
+void TransferFunction::clearPoints()
+{
+    _points.clear();
+    ++_modifiedCount;
+}
+
+void TransferFunction::setDomain(double minValue, double maxValue)
+{
+    if (!std::isfinite(minValue) || !std::isfinite(maxValue) || !(minValue < maxValue))
+        throw std::invalid_argument("transfer-function domain needs finite min < max, got " +
+                                    std::to_string(minValue) + ".." + std::to_string(maxValue));
+    _hasDomain = true;
+    _domainMin = minValue;
+    _domainMax = maxValue;
+    ++_modifiedCount;
+}
+
+void TransferFunction::clearDomain()
+{
+    _hasDomain = false;
+    ++_modifiedCount;
+}
+
+double TransferFunction::domainMin() const
+{
+    if (_hasDomain || _points.empty()) return _domainMin;
+    return _points.begin()->first;
+}
+
+double TransferFunction::domainMax() const
+{
+    if (_hasDomain || _points.empty()) return _domainMax;
+    const double hi = _points.rbegin()->first;
+    return hi > domainMin() ? hi : domainMin() + 1.0;  // a single point still spans a window
+}
+
+void TransferFunction::setResolution(unsigned int entries)
+{
+    if (entries < 2 || entries > 65536)
+        throw std::invalid_argument("transfer-function resolution must be 2..65536, got " + std::to_string(entries));
+    _resolution = entries;
+    ++_modifiedCount;
+}
+
+osg::Vec4 TransferFunction::evaluate(double value) const
+{
+    if (_points.empty()) return osg::Vec4(0, 0, 0, 0);
+    auto upper = _points.lower_bound(value);
+    if (upper == _points.begin()) return upper->second;
+    if (upper == _points.end()) return _points.rbegin()->second;
+    if (upper->first == value) return upper->second;
+    auto lower = std::prev(upper);
+    const double t = (value - lower->first) / (upper->first - lower->first);
+    return lower->second * float(1.0 - t) + upper->second * float(t);
+}
+
+std::vector<osg::Vec4> TransferFunction::lookupTable() const
+{
+    std::vector<osg::Vec4> table(_resolution);
+    const double lo = domainMin(), hi = domainMax();
+    for (unsigned int i = 0; i < _resolution; ++i)
+        table[i] = evaluate(lo + (hi - lo) * double(i) / double(_resolution - 1));
+    return table;
+}
+
+}  // namespace volren

@@ -1,0 +1,59 @@
+#pragma once
+#include <volume_renderer/HeadlessContext.h>
+#include <volume_renderer/VolumeScene.h>
+
+#include <osg/Image>
+#include <osgViewer/Viewer>
+
+#include <memory>
+
+namespace volren {
+
+/// Time one frame took: CPU wall time of the whole frame (including read-back) and GPU time
+/// of the camera's draw from a GL_TIME_ELAPSED query.
+struct FrameTiming
+{
+    double cpuMs = 0.0;   ///< wall-clock milliseconds of viewer.frame()
+    double gpuMs = -1.0;  ///< GPU milliseconds; negative when the query is unavailable
+};
+
+/// Renders a scene with no display: a HeadlessContext drives an embedded osgViewer whose
+/// camera draws into an RGBA32F framebuffer object that is read back after every frame.
+class OffscreenRenderer
+{
+public:
+    /// Creates the EGL context and the viewer; throws std::runtime_error on failure.
+    OffscreenRenderer(int width, int height);
+    ~OffscreenRenderer();
+
+    /// Sets the scene; a root that is not a VolumeScene is wrapped in one.
+    void setScene(osg::Node* root);
+    /// The VolumeScene at the root of the current scene.
+    VolumeScene* volumeScene() { return _scene.get(); }
+    /// The camera: set its view and projection matrices before rendering.
+    osg::Camera* camera();
+    /// Clear colour (the TF's background), linear RGB.
+    void setBackground(const osg::Vec3& rgb);
+
+    /// Renders one frame and reads it back; throws std::runtime_error on shader errors.
+    FrameTiming renderFrame();
+    /// Last frame: RGBA float, premultiplied over the background, row 0 at the bottom.
+    const osg::Image* image() const { return _image.get(); }
+
+    /// Description of the GL context ("EGL surfaceless: OpenGL 4.5 ... / llvmpipe").
+    const std::string& contextDescription() const { return _context->description(); }
+    int width() const { return _width; }    ///< image width in pixels
+    int height() const { return _height; }  ///< image height in pixels
+
+private:
+    struct GpuTimer;
+    std::unique_ptr<HeadlessContext> _context;
+    osg::ref_ptr<osgViewer::Viewer> _viewer;
+    osg::ref_ptr<VolumeScene> _scene;
+    osg::ref_ptr<osg::Image> _image;
+    osg::ref_ptr<GpuTimer> _timer;
+    int _width, _height;
+    bool _checked = false;
+};
+
+}  // namespace volren

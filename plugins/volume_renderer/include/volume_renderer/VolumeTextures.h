@@ -1,0 +1,20 @@
+#pragma once
+#include <volume_model/TransferFunction.h>
+#include <volume_model/Volume.h>
+
+#include <osg/Texture1D>
+#include <osg/Texture3D>
+
+namespace volren {
+
+/// GL internal format keeping a voxel type's precision: R8, R8_SNORM, R16, R16_SNORM, R32F.
+GLenum internalFormatFor(VoxelType type);
+
+/// 3D texture of the volume's voxels at full precision; the image references (does not copy)
+/// the Volume's buffer, so keep the Volume alive as long as the texture.
+osg::ref_ptr<osg::Texture3D> makeVolumeTexture(const Volume& volume);
+
+/// RGBA32F 1D lookup table of the transfer function (resolution() texels).
+osg::ref_ptr<osg::Texture1D> makeTransferFunctionTexture(const TransferFunction& tf);
+
+}  // namespace volren

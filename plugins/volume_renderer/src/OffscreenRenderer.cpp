@@ -1,0 +1,144 @@
+#include <volume_renderer/OffscreenRenderer.h>
+
+#include <osg/GLExtensions>
+#include <osgViewer/GraphicsWindow>
+
+#include <chrono>
+#include <stdexcept>
+
+#ifndef GL_TIME_ELAPSED
+#define GL_TIME_ELAPSED 0x88BF
+#endif
+
+namespace volren {
+
+/// Brackets the camera's drawing with a GL_TIME_ELAPSED query.
+struct OffscreenRenderer::GpuTimer : osg::Referenced
+{
+    GLuint query = 0;
+    bool started = false;
+    const osg::GLExtensions* ext = nullptr;
+
+    struct Begin : osg::Camera::DrawCallback
+    {
+        GpuTimer* timer;
+        explicit Begin(GpuTimer* t) : timer(t) {}
+        void operator()(osg::RenderInfo& info) const override
+        {
+            const osg::GLExtensions* ext = info.getState()->get<osg::GLExtensions>();
+            if (!ext || !ext->glGenQueries || !ext->glGetQueryObjectui64v) return;
+            timer->ext = ext;
+            if (!timer->query) ext->glGenQueries(1, &timer->query);
+            ext->glBeginQuery(GL_TIME_ELAPSED, timer->query);
+            timer->started = true;
+        }
+    };
+    struct End : osg::Camera::DrawCallback
+    {
+        GpuTimer* timer;
+        explicit End(GpuTimer* t) : timer(t) {}
+        void operator()(osg::RenderInfo&) const override
+        {
+            if (timer->started) timer->ext->glEndQuery(GL_TIME_ELAPSED);
+        }
+    };
+
+    double collectMs()
+    {
+        if (!started) return -1.0;
+        started = false;
+        GLuint64 ns = 0;
+        ext->glGetQueryObjectui64v(query, GL_QUERY_RESULT, &ns);  // waits for the GPU
+        return double(ns) * 1e-6;
+    }
+};
+
+OffscreenRenderer::OffscreenRenderer(int width, int height) : _width(width), _height(height)
+{
+    if (width <= 0 || height <= 0 || width > 16384 || height > 16384)
+        throw std::runtime_error("image size must be 1..16384 pixels per side, got " + std::to_string(width) + "x" +
+                                 std::to_string(height));
+    _context = std::make_unique<HeadlessContext>();
+
+    _viewer = new osgViewer::Viewer;
+    _viewer->setThreadingModel(osgViewer::ViewerBase::SingleThreaded);
+    _viewer->setUpViewerAsEmbeddedInWindow(0, 0, width, height);
+    _viewer->setKeyEventSetsDone(0);
+    _viewer->setQuitEventSetsDone(false);
+    _viewer->setReleaseContextAtEndOfFrameHint(false);
+
+    osg::Camera* cam = _viewer->getCamera();
+    osg::State* state = cam->getGraphicsContext()->getState();
+    // GLSL written for core profiles: OSG feeds osg_Vertex and the osg_*Matrix uniforms.
+    state->setUseModelViewAndProjectionUniforms(true);
+    state->setUseVertexAttributeAliasing(true);
+
+    _image = new osg::Image;
+    _image->allocateImage(width, height, 1, GL_RGBA, GL_FLOAT);
+    _image->setInternalTextureFormat(GL_RGBA32F_ARB);
+    cam->setViewport(0, 0, width, height);
+    cam->setRenderTargetImplementation(osg::Camera::FRAME_BUFFER_OBJECT);
+    cam->attach(osg::Camera::COLOR_BUFFER, _image.get());
+    cam->attach(osg::Camera::DEPTH_BUFFER, GL_DEPTH_COMPONENT24);
+    cam->setClearColor(osg::Vec4(0.0f, 0.0f, 0.0f, 0.0f));
+    cam->setProjectionMatrixAsPerspective(30.0, double(width) / height, 0.1, 1000.0);
+
+    _timer = new GpuTimer;
+    cam->setInitialDrawCallback(new GpuTimer::Begin(_timer.get()));
+    cam->setFinalDrawCallback(new GpuTimer::End(_timer.get()));
+
+    _scene = new VolumeScene;
+    _viewer->setSceneData(_scene.get());
+    _viewer->realize();
+}
+
+OffscreenRenderer::~OffscreenRenderer()
+{
+    if (_viewer) {
+        _context->makeCurrent();
+        _viewer->setSceneData(nullptr);
+        _scene = nullptr;
+        _viewer->getCamera()->getGraphicsContext()->close(true);  // releases GL objects while current
+        _viewer = nullptr;
+    }
+}
+
+void OffscreenRenderer::setScene(osg::Node* root)
+{
+    osg::ref_ptr<VolumeScene> scene = dynamic_cast<VolumeScene*>(root);
+    if (!scene) {
+        scene = new VolumeScene;
+        if (root) scene->addChild(root);
+    }
+    _scene = scene;
+    _viewer->setSceneData(_scene.get());
+    _checked = false;
+}
+
+osg::Camera* OffscreenRenderer::camera()
+{
+    return _viewer->getCamera();
+}
+
+void OffscreenRenderer::setBackground(const osg::Vec3& rgb)
+{
+    // Alpha 0: the image's alpha channel is the scene's own coverage.
+    _viewer->getCamera()->setClearColor(osg::Vec4(rgb, 0.0f));
+}
+
+FrameTiming OffscreenRenderer::renderFrame()
+{
+    if (!_context->makeCurrent()) throw std::runtime_error("EGL: cannot make the context current");
+    FrameTiming timing;
+    const auto start = std::chrono::steady_clock::now();
+    _viewer->frame();
+    timing.gpuMs = _timer->collectMs();
+    timing.cpuMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    if (!_checked) {
+        _scene->checkPrograms(*_viewer->getCamera()->getGraphicsContext()->getState());
+        _checked = true;
+    }
+    return timing;
+}
+
+}  // namespace volren

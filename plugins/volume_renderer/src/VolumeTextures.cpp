@@ -1,0 +1,69 @@
+#include <volume_renderer/VolumeTextures.h>
+
+#include <osg/Image>
+
+namespace volren {
+
+namespace {
+
+GLenum pixelTypeFor(VoxelType type)
+{
+    switch (type) {
+    case VoxelType::UInt8: return GL_UNSIGNED_BYTE;
+    case VoxelType::Int8: return GL_BYTE;
+    case VoxelType::UInt16: return GL_UNSIGNED_SHORT;
+    case VoxelType::Int16: return GL_SHORT;
+    case VoxelType::Float32: return GL_FLOAT;
+    }
+    return GL_UNSIGNED_BYTE;
+}
+
+}  // namespace
+
+GLenum internalFormatFor(VoxelType type)
+{
+    switch (type) {
+    case VoxelType::UInt8: return GL_R8;
+    case VoxelType::Int8: return GL_R8_SNORM;
+    case VoxelType::UInt16: return GL_R16;
+    case VoxelType::Int16: return GL_R16_SNORM;
+    case VoxelType::Float32: return GL_R32F;
+    }
+    return GL_R8;
+}
+
+osg::ref_ptr<osg::Texture3D> makeVolumeTexture(const Volume& volume)
+{
+    osg::ref_ptr<osg::Image> image = new osg::Image;
+    const osg::Vec3i& d = volume.dims();
+    image->setImage(d.x(), d.y(), d.z(), internalFormatFor(volume.type()), GL_RED, pixelTypeFor(volume.type()),
+                    const_cast<unsigned char*>(volume.data()), osg::Image::NO_DELETE, 1);
+    osg::ref_ptr<osg::Texture3D> texture = new osg::Texture3D(image.get());
+    texture->setName(volume.getName());
+    texture->setInternalFormat(internalFormatFor(volume.type()));
+    texture->setResizeNonPowerOfTwoHint(false);
+    texture->setUnRefImageDataAfterApply(false);
+    texture->setFilter(osg::Texture::MIN_FILTER, osg::Texture::LINEAR);
+    texture->setFilter(osg::Texture::MAG_FILTER, osg::Texture::LINEAR);
+    for (auto wrap : {osg::Texture::WRAP_S, osg::Texture::WRAP_T, osg::Texture::WRAP_R})
+        texture->setWrap(wrap, osg::Texture::CLAMP_TO_EDGE);
+    return texture;
+}
+
+osg::ref_ptr<osg::Texture1D> makeTransferFunctionTexture(const TransferFunction& tf)
+{
+    const std::vector<osg::Vec4> table = tf.lookupTable();
+    osg::ref_ptr<osg::Image> image = new osg::Image;
+    image->allocateImage(int(table.size()), 1, 1, GL_RGBA, GL_FLOAT);
+    image->setInternalTextureFormat(GL_RGBA32F_ARB);
+    std::copy(table.begin(), table.end(), reinterpret_cast<osg::Vec4*>(image->data()));
+    osg::ref_ptr<osg::Texture1D> texture = new osg::Texture1D(image.get());
+    texture->setInternalFormat(GL_RGBA32F_ARB);
+    texture->setResizeNonPowerOfTwoHint(false);
+    texture->setFilter(osg::Texture::MIN_FILTER, osg::Texture::LINEAR);
+    texture->setFilter(osg::Texture::MAG_FILTER, osg::Texture::LINEAR);
+    texture->setWrap(osg::Texture::WRAP_S, osg::Texture::CLAMP_TO_EDGE);
+    return texture;
+}
+
+}  // namespace volren

@@ -1,0 +1,21 @@
+#version 430 core
+// RaySetup/box_intersection, vertex stage: draws the volume box (dims * spacing, centred on the
+// node's origin; its corners are the proxy geometry's vertices) and hands the fragment stage
+// its clip-space position and the clip -> volume-texture-space matrix.
+in vec4 osg_Vertex;
+uniform mat4 osg_ModelViewProjectionMatrix;
+uniform vec3 volren_worldSize;
+out vec4 volren_vClip;
+flat out mat4 volren_clipToTexture;
+
+void main()
+{
+    mat4 textureToLocal = mat4(vec4(volren_worldSize.x, 0.0, 0.0, 0.0),
+                               vec4(0.0, volren_worldSize.y, 0.0, 0.0),
+                               vec4(0.0, 0.0, volren_worldSize.z, 0.0),
+                               vec4(-0.5 * volren_worldSize, 1.0));
+    mat4 textureToClip = osg_ModelViewProjectionMatrix * textureToLocal;
+    volren_clipToTexture = inverse(textureToClip);
+    gl_Position = osg_ModelViewProjectionMatrix * osg_Vertex;
+    volren_vClip = gl_Position;
+}

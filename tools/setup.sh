@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Installs every Debian package volren needs (idempotent) and configures + builds it.
+# Usage: tools/setup.sh [--deps-only] [BUILD_DIR]
+set -euo pipefail
+
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+deps_only=0
+if [ "${1:-}" = "--deps-only" ]; then deps_only=1; shift; fi
+build=${1:-"$here/build"}
+
+packages=(
+  build-essential cmake pkg-config
+  libopenscenegraph-dev openscenegraph
+  libglm-dev libtiff-dev libopenimageio-dev openimageio-tools zlib1g-dev
+  libgtest-dev libgmock-dev nlohmann-json3-dev
+  libegl-dev libegl-mesa0 libgl-dev libgl1-mesa-dri libgbm1
+  mricron-data
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "volren setup: installing ${missing[*]}"
+  sudo_cmd=()
+  [ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
+  "${sudo_cmd[@]}" apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+[ $deps_only -eq 1 ] && exit 0
+
+jobs=$(nproc 2>/dev/null || echo 2)
+if [ ! -f "$build/CMakeCache.txt" ]; then
+  cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo
+fi
+cmake --build "$build" -j "$jobs"
