@@ -1,0 +1,153 @@
+// The `volren` program's contract: commands, outputs, statistics and errors with exit codes.
+#include "TestData.h"
+
+#include <OpenImageIO/imageio.h>
+#include <nlohmann/json.hpp>
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sys/wait.h>
+
+namespace volren::test {
+namespace {
+
+struct CliRun
+{
+    int exitCode = -1;
+    std::string output;  // stdout and stderr
+};
+
+CliRun volren(const std::string& args, const std::string& workingDirectory = ".")
+{
+    const std::string command = "cd '" + workingDirectory + "' && '" + std::string(VOLREN_BINARY_DIR) +
+                                "/bin/volren' " + args + " 2>&1";
+    CliRun run;
+    FILE* pipe = popen(command.c_str(), "r");
+    char buf[4096];
+    std::size_t n;
+    while ((n = fread(buf, 1, sizeof(buf), pipe)) > 0) run.output.append(buf, n);
+    const int status = pclose(pipe);
+    run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return run;
+}
+
+struct Image
+{
+    int width = 0, height = 0, channels = 0;
+    std::vector<float> pixels;  // top row first
+    float at(int x, int y, int c) const { return pixels[(std::size_t(y) * width + x) * channels + c]; }
+};
+
+Image readImage(const std::string& path)
+{
+    Image img;
+    auto in = OIIO::ImageInput::open(path);
+    if (!in) return img;
+    const OIIO::ImageSpec& spec = in->spec();
+    img.width = spec.width;
+    img.height = spec.height;
+    img.channels = spec.nchannels;
+    img.pixels.resize(std::size_t(img.width) * img.height * img.channels);
+    in->read_image(0, 0, 0, img.channels, OIIO::TypeDesc::FLOAT, img.pixels.data());
+    return img;
+}
+
+TEST(VolrenCli, NoArgumentsRendersTheDefaultSceneToVolrenPng)
+{
+    const std::string dir = tempDirectory();
+    const CliRun run = volren("", dir);
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    EXPECT_NE(run.output.find("wrote " + dir + "/volren.png"), std::string::npos) << run.output;
+    const Image img = readImage(dir + "/volren.png");
+    ASSERT_EQ(img.width, 512);
+    ASSERT_EQ(img.height, 512);
+    // The head fills the middle; the corners are black background.
+    EXPECT_GT(img.at(256, 256, 0), 0.2f);
+    for (auto [x, y] : {std::pair{0, 0}, {511, 0}, {0, 511}, {511, 511}})
+        for (int c = 0; c < 3; ++c) EXPECT_EQ(img.at(x, y, c), 0.0f);
+}
+
+TEST(VolrenCli, RenderHonoursSizeFramesStatsAndTransferFunction)
+{
+    VOLREN_REQUIRE_SHARED_DATA();
+    const std::string dir = tempDirectory();
+    const std::string volume = sharedData("mri/ch2.nii.gz");
+    // An opaque pure red TF: every pixel where a ray meets the box is exactly red.
+    std::ofstream(dir + "/red.tf") << "0 255 0 0 255\n255 255 0 0 255\n";
+    const CliRun run = volren("render '" + volume + "' -o '" + dir + "/out.png' --size 96x64 --frames 3 --stats '" +
+                           dir + "/stats.json' --tf '" + dir + "/red.tf' --background 0,0,1 --ortho 400 --set jitter=off");
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    const Image img = readImage(dir + "/out.png");
+    ASSERT_EQ(img.width, 96);
+    ASSERT_EQ(img.height, 64);
+    EXPECT_EQ(img.at(48, 32, 0), 1.0f);
+    EXPECT_EQ(img.at(48, 32, 2), 0.0f);
+    EXPECT_EQ(img.at(0, 0, 2), 1.0f) << "background colour in the corner";
+    EXPECT_EQ(img.at(0, 0, 0), 0.0f);
+
+    nlohmann::json stats = nlohmann::json::parse(std::ifstream(dir + "/stats.json"));
+    EXPECT_EQ(stats["width"], 96);
+    EXPECT_EQ(stats["height"], 64);
+    ASSERT_EQ(stats["frames"].size(), 3u);
+    for (const auto& f : stats["frames"]) {
+        EXPECT_GT(f["cpu_ms"].get<double>(), 0.0);
+        ASSERT_TRUE(f["gpu_ms"].is_number()) << "timer queries work on llvmpipe";
+        EXPECT_GT(f["gpu_ms"].get<double>(), 0.0);
+    }
+    ASSERT_EQ(stats["composition_keys"].size(), 1u);
+    const std::string key = stats["composition_keys"][0];
+    EXPECT_NE(key.find("Jitter=null;"), std::string::npos) << key;
+    EXPECT_NE(key.find("RayTraversal=dvr_front_to_back;"), std::string::npos) << key;
+}
+
+TEST(VolrenCli, FloatOutputIsWrittenAsExrWithAlpha)
+{
+    VOLREN_REQUIRE_SHARED_DATA();
+    const std::string dir = tempDirectory();
+    const CliRun run = volren("render '" + sharedData("mri/ch2.nii.gz") + "' -o '" + dir + "/out.exr' --size 32x32");
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    const Image img = readImage(dir + "/out.exr");
+    ASSERT_EQ(img.channels, 4);
+    EXPECT_GT(img.at(16, 16, 3), 0.5f);
+    EXPECT_EQ(img.at(0, 0, 3), 0.0f);
+}
+
+TEST(VolrenCli, InfoPrintsGeometryAndValues)
+{
+    VOLREN_REQUIRE_SHARED_DATA();
+    const CliRun run = volren("info '" + sharedData("ct/CT_AVM.nii.gz") + "'");
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    EXPECT_NE(run.output.find("dims:        256 x 242 x 154"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("voxel type:  uint8"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("spacing:     0.7199"), std::string::npos) << run.output;
+}
+
+TEST(VolrenCli, BadArgumentsExitWithUsageErrors)
+{
+    VOLREN_REQUIRE_SHARED_DATA();
+    const std::string dir = tempDirectory();
+    const std::string volume = sharedData("mri/ch2.nii.gz");
+    struct Case { std::string args, expect; int code; };
+    for (const Case& c : {Case{"frobnicate", "unknown command 'frobnicate'", 2},
+                          Case{"render '" + volume + "'", "missing -o OUT", 2},
+                          Case{"render '" + volume + "' -o x.png --size 12", "--size: expected WxH", 2},
+                          Case{"render '" + volume + "' -o x.png --size 0x5", "--size width", 2},
+                          Case{"render '" + volume + "' -o x.png --fov 30 --ortho 4", "exclude each other", 2},
+                          Case{"render '" + volume + "' -o x.png --eye 1,2", "--eye: expected x,y,z", 2},
+                          Case{"render '" + volume + "' -o x.png --set warp=9", "unknown setting 'warp'", 2},
+                          Case{"render '" + volume + "' -o x.png --frames -1", "--frames", 2},
+                          Case{"render '" + volume + "' -o x.png --bogus", "unknown option '--bogus'", 2},
+                          Case{"render " + dir + "/none.nii -o x.png", dir + "/none.nii: no such file", 1},
+                          Case{"render '" + volume + "' -o x.png --tf " + dir + "/none.tf", dir + "/none.tf: cannot open", 1},
+                          Case{"render '" + volume + "' -o " + dir + "/x.unknownformat", "x.unknownformat", 1},
+                          Case{"info", "info takes exactly one volume file", 2}}) {
+        const CliRun run = volren(c.args, dir);
+        EXPECT_EQ(run.exitCode, c.code) << c.args << "\n" << run.output;
+        EXPECT_NE(run.output.find(c.expect), std::string::npos) << c.args << "\n" << run.output;
+    }
+}
+
+}  // namespace
+}  // namespace volren::test

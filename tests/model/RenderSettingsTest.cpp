@@ -1,0 +1,40 @@
+#include <volume_model/RenderSettings.h>
+
+#include <gtest/gtest.h>
+
+namespace volren::test {
+namespace {
+
+TEST(RenderSettings, SetParsesEveryKey)
+{
+    RenderSettings s;
+    std::string error;
+    ASSERT_TRUE(s.set("sampleFactor", "0.25", error)) << error;
+    ASSERT_TRUE(s.set("sampleDistance", "1.5", error)) << error;
+    ASSERT_TRUE(s.set("earlyTermination", "1", error)) << error;
+    ASSERT_TRUE(s.set("jitter", "off", error)) << error;
+    EXPECT_EQ(s.sampleDistanceFactor, 0.25);
+    EXPECT_EQ(s.sampleDistance, 1.5);
+    EXPECT_EQ(s.earlyTerminationThreshold, 1.0);
+    EXPECT_FALSE(s.jitter);
+    EXPECT_NE(s, RenderSettings{});
+}
+
+TEST(RenderSettings, RejectsUnknownKeysAndBadValues)
+{
+    RenderSettings s;
+    std::string error;
+    EXPECT_FALSE(s.set("sampelFactor", "1", error));
+    EXPECT_NE(error.find("unknown setting 'sampelFactor'"), std::string::npos) << error;
+    EXPECT_NE(error.find("sampleFactor"), std::string::npos) << "lists the known keys";
+    for (auto [key, value] : {std::pair{"sampleFactor", "0"}, {"sampleFactor", "-1"}, {"sampleFactor", "nan"},
+                              {"sampleFactor", "1x"}, {"earlyTermination", "1.5"}, {"jitter", "maybe"},
+                              {"sampleDistance", "-3"}}) {
+        EXPECT_FALSE(s.set(key, value, error)) << key << "=" << value;
+        EXPECT_NE(error.find(value), std::string::npos) << error;
+    }
+    EXPECT_EQ(s, RenderSettings{}) << "failed sets change nothing";
+}
+
+}  // namespace
+}  // namespace volren::test

@@ -1,0 +1,154 @@
+// The shader compositor: composition keys, program caching, source assembly and the errors
+// that name slot, implementation and file.
+#include <volume_renderer/ShaderCompositor.h>
+#include <volume_renderer/Slots.h>
+#include <volume_renderer/VolumeScene.h>
+
+#include "TestData.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+namespace volren::test {
+namespace {
+
+TEST(Compositor, KeyNamesEverySlotWithDefaultsFilledIn)
+{
+    Composition c;
+    c.choice["Jitter"] = "hash";
+    const std::string key = c.key();
+    for (const SlotInfo& s : slots()) EXPECT_NE(key.find(s.name + "="), std::string::npos) << s.name;
+    EXPECT_NE(key.find("Jitter=hash;"), std::string::npos);
+    EXPECT_NE(key.find("RayTraversal=dvr_front_to_back;"), std::string::npos);
+    EXPECT_NE(key, Composition{}.key());
+}
+
+TEST(Compositor, SameCompositionIsBuiltOnceAndReused)
+{
+    ShaderCompositor compositor;
+    Composition a, b;
+    a.choice["Jitter"] = "hash";
+    b.choice["Jitter"] = "hash";
+    auto pa = compositor.program(a);
+    auto pb = compositor.program(b);
+    EXPECT_EQ(pa.get(), pb.get());
+    EXPECT_EQ(compositor.programCount(), 1u);
+    compositor.program(Composition{});
+    EXPECT_EQ(compositor.programCount(), 2u);
+}
+
+TEST(Compositor, ComposedSourceHoldsEachChosenFileOnceWithLineMarkers)
+{
+    ShaderCompositor compositor;
+    Composition c;
+    c.choice["Jitter"] = "hash";
+    auto p = compositor.program(c);
+    const std::string& src = p->fragmentSource;
+    EXPECT_EQ(src.rfind("#version 430 core", 0), 0u) << "version must come first";
+    EXPECT_NE(src.find("float volren_jitter(vec2 fragCoord)\n{\n    uvec2 p"), std::string::npos);
+    const std::string definition = "float volren_jitter(vec2 fragCoord)\n{";
+    EXPECT_EQ(src.find(definition), src.rfind(definition)) << "exactly one Jitter implementation is included";
+    // Uniforms are declared once, by the compositor.
+    const std::string decl = "uniform vec3 volren_worldSize;";
+    EXPECT_NE(src.find(decl), std::string::npos);
+    EXPECT_EQ(src.find(decl), src.rfind(decl));
+    ASSERT_EQ(p->sourceNames.size(), 3u + slots().size());
+    EXPECT_EQ(p->sourceNames.back(), "RaySetup/box_intersection.glsl");
+    EXPECT_EQ(p->textureUnits.at("volren_volume"), 0);
+    EXPECT_EQ(p->textureUnits.at("volren_transferFunction"), 1);
+}
+
+TEST(Compositor, UnknownImplementationIsAnErrorNamingSlotAndKnownOnes)
+{
+    ShaderCompositor compositor;
+    Composition c;
+    c.choice["Jitter"] = "blue_noise_from_mars";
+    try {
+        compositor.program(c);
+        FAIL() << "expected an error";
+    } catch (const std::runtime_error& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("slot Jitter"), std::string::npos) << what;
+        EXPECT_NE(what.find("blue_noise_from_mars"), std::string::npos) << what;
+        EXPECT_NE(what.find("hash"), std::string::npos) << what;
+    }
+    Composition badSlot;
+    badSlot.choice["Teleport"] = "null";
+    EXPECT_THROW(compositor.program(badSlot), std::runtime_error);
+}
+
+TEST(Compositor, MissingShaderFileNamesImplementationAndPath)
+{
+    ShaderFunctionRegistry registry;
+    registerRaySetupFunctions(registry);
+    registerClipRayFunctions(registry);
+    registerRayTraversalFunctions(registry);
+    registerClipPositionFunctions(registry);
+    registerReconstructionFunctions(registry);
+    registerClassificationFunctions(registry);
+    registerShadingFunctions(registry);
+    registry.add({"Jitter", "null", "Jitter/does_not_exist.glsl", "", {}, {}, {}, nullptr});
+    ShaderCompositor compositor(registry);
+    try {
+        compositor.program(Composition{});
+        FAIL() << "expected an error";
+    } catch (const std::runtime_error& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("slot Jitter, implementation null"), std::string::npos) << what;
+        EXPECT_NE(what.find("Jitter/does_not_exist.glsl"), std::string::npos) << what;
+    }
+}
+
+TEST(Compositor, ShaderPathOverridesTheInstalledFiles)
+{
+    const std::string dir = tempDirectory();
+    std::filesystem::create_directories(dir + "/Jitter");
+    std::ofstream(dir + "/Jitter/hash.glsl") << "// override\nfloat volren_jitter(vec2 f) { return 0.25; }\n";
+    setenv("VOLREN_SHADER_PATH", dir.c_str(), 1);
+    ShaderCompositor compositor;
+    Composition c;
+    c.choice["Jitter"] = "hash";
+    const std::string src = compositor.program(c)->fragmentSource;
+    unsetenv("VOLREN_SHADER_PATH");
+    EXPECT_NE(src.find("return 0.25;"), std::string::npos);
+}
+
+TEST(Compositor, DriverLogLinesAreMappedToShaderFiles)
+{
+    ShaderCompositor compositor;
+    auto p = compositor.program(Composition{});
+    const std::size_t traversal = p->sourceNames.size() - 2;  // RayTraversal precedes RaySetup
+    const std::string mesa = std::to_string(traversal) + ":17(5): error: `foo' undeclared\n";
+    const std::string nvidia = std::to_string(traversal) + "(17) : error C1008: undefined variable \"foo\"\n";
+    EXPECT_EQ(ShaderCompositor::explainLog(mesa, *p), "RayTraversal/dvr_front_to_back.glsl:17: error: `foo' undeclared\n");
+    EXPECT_EQ(ShaderCompositor::explainLog(nvidia, *p),
+              "RayTraversal/dvr_front_to_back.glsl:17 : error C1008: undefined variable \"foo\"\n");
+}
+
+TEST(Compositor, SceneAnalysisPicksJitterFromTheNodeSettings)
+{
+    osg::ref_ptr<VolumeNode> node = new VolumeNode;
+    node->settings.jitter = true;
+    EXPECT_EQ(VolumeScene::chooseComposition(*node).functionFor("Jitter"), "hash");
+    node->settings.jitter = false;
+    EXPECT_EQ(VolumeScene::chooseComposition(*node).functionFor("Jitter"), "null");
+}
+
+TEST(Compositor, SampleDistanceIsAFactorOfTheSmallestSpacingAndBounded)
+{
+    osg::ref_ptr<Volume> volume = constantVolume(VoxelType::UInt8, {10, 10, 10}, 1, {0.5, 2.0, 3.0});
+    osg::ref_ptr<VolumeNode> node = new VolumeNode;
+    node->setVolume(volume.get());
+    node->settings.sampleDistanceFactor = 0.25;
+    EXPECT_DOUBLE_EQ(VolumeScene::effectiveSampleDistance(*node), 0.125);
+    node->settings.sampleDistance = 0.7;
+    EXPECT_DOUBLE_EQ(VolumeScene::effectiveSampleDistance(*node), 0.7);
+    node->settings.sampleDistance = 1e-12;  // absurd: coarsened so a ray takes at most maxSteps samples
+    EXPECT_DOUBLE_EQ(VolumeScene::effectiveSampleDistance(*node), volume->worldSize().length() / VolumeScene::maxSteps);
+}
+
+}  // namespace
+}  // namespace volren::test

@@ -1,0 +1,40 @@
+#pragma once
+#include <volume_renderer/OffscreenRenderer.h>
+
+#include <volume_model/VolumeNode.h>
+
+#include <osg/Vec4>
+
+#include <gtest/gtest.h>
+
+namespace volren::test {
+
+/// RGBA float pixels of a rendered frame, row 0 at the bottom.
+struct Pixels
+{
+    int width = 0, height = 0;
+    std::vector<osg::Vec4> rgba;
+    const osg::Vec4& at(int x, int y) const { return rgba[std::size_t(y) * width + x]; }
+};
+
+/// Headless renderer shared by the render tests of one process (one EGL context).
+class RenderFixture : public ::testing::Test
+{
+public:
+    /// The shared renderer, created at `width` x `height` (re-created when the size changes).
+    static OffscreenRenderer& renderer(int width, int height);
+
+    /// Renders `scene` with an orthographic camera looking from +z down -z at the origin,
+    /// showing `viewHeight` world units vertically; near/far fixed around the scene.
+    static Pixels renderOrthoFromPlusZ(osg::Node* scene, int width, int height, double viewHeight,
+                                       const osg::Vec3& background = {0, 0, 0});
+
+    /// Renders with the given view and projection matrices, no automatic near/far.
+    static Pixels render(osg::Node* scene, int width, int height, const osg::Matrixd& view,
+                         const osg::Matrixd& projection, const osg::Vec3& background = {0, 0, 0});
+
+    /// A VolumeNode showing `volume` through `tf`, jitter off unless asked.
+    static osg::ref_ptr<VolumeNode> volumeNode(Volume* volume, TransferFunction* tf, bool jitter = false);
+};
+
+}  // namespace volren::test

@@ -1,0 +1,30 @@
+#pragma once
+#include <volume_model/TransferFunction.h>
+#include <volume_model/Volume.h>
+
+#include <string>
+
+namespace volren::test {
+
+/// Whether ../shared/data is present; its absence is a test failure when
+/// $VOLREN_REQUIRE_SHARED_DATA is set (CI sets it).
+bool sharedDataPresent();
+
+/// Path of a file in ../shared/data (see its MANIFEST.md).
+std::string sharedData(const std::string& relative);
+
+/// Skips the calling test when ../shared/data is absent (fails instead under CI).
+#define VOLREN_REQUIRE_SHARED_DATA() \
+    if (!::volren::test::sharedDataPresent()) GTEST_SKIP() << "../shared/data is not present"
+
+/// A fresh empty temporary directory for this test.
+std::string tempDirectory();
+
+/// A volume of `dims` whose every voxel stores `value`.
+osg::ref_ptr<Volume> constantVolume(VoxelType type, const osg::Vec3i& dims, double value,
+                                    const osg::Vec3d& spacing = {1.0, 1.0, 1.0});
+
+/// A TF with the same colour and opacity everywhere on [lo, hi].
+osg::ref_ptr<TransferFunction> constantTransferFunction(const osg::Vec4& rgba, double lo = 0.0, double hi = 255.0);
+
+}  // namespace volren::test
