@@ -13,12 +13,12 @@ function(volren_add_library name)
 endfunction()
 
 # volren_add_osgdb_plugin(EXT SOURCES...): an osgDB ReaderWriter named osgdb_EXT, placed where
-# OSG looks for plugins (lib/osgPlugins-X) in both the build and the install tree.
+# OSG looks for plugins (LIBDIR/osgPlugins-X) in both the build and the install tree.
 function(volren_add_osgdb_plugin ext)
   set(target osgdb_${ext})
   add_library(${target} MODULE ${ARGN})
   set_target_properties(${target} PROPERTIES PREFIX ""
-    LIBRARY_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/lib/${VOLREN_OSG_PLUGIN_DIR}"
+    LIBRARY_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/${CMAKE_INSTALL_LIBDIR}/${VOLREN_OSG_PLUGIN_DIR}"
     INSTALL_RPATH "$ORIGIN/..")
   install(TARGETS ${target} LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/${VOLREN_OSG_PLUGIN_DIR})
 endfunction()

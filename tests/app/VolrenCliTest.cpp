@@ -93,6 +93,8 @@ TEST(VolrenCli, RenderHonoursSizeFramesStatsAndTransferFunction)
     ASSERT_EQ(stats["frames"].size(), 3u);
     for (const auto& f : stats["frames"]) {
         EXPECT_GT(f["cpu_ms"].get<double>(), 0.0);
+        EXPECT_GT(f["draw_ms"].get<double>(), 0.0);
+        EXPECT_LE(f["draw_ms"].get<double>(), f["cpu_ms"].get<double>());
         ASSERT_TRUE(f["gpu_ms"].is_number()) << "timer queries work on llvmpipe";
         EXPECT_GT(f["gpu_ms"].get<double>(), 0.0);
     }

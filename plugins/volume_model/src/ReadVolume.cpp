@@ -40,7 +40,7 @@ void registerPluginPath()
 std::string shareDirectory()
 {
     if (const char* env = std::getenv("VOLREN_SHARE_DIR"); env && *env) return env;
-    return osgDB::concatPaths(osgDB::getFilePath(libraryDirectory()), "share/volren");
+    return osgDB::getRealPath(osgDB::concatPaths(libraryDirectory(), VOLREN_LIB_TO_SHARE));
 }
 
 std::string volumeFileExtension(const std::string& path)

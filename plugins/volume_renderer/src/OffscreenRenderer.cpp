@@ -18,6 +18,8 @@ struct OffscreenRenderer::GpuTimer : osg::Referenced
     GLuint query = 0;
     bool started = false;
     const osg::GLExtensions* ext = nullptr;
+    std::chrono::steady_clock::time_point drawStart;
+    double drawMs = -1.0;
 
     struct Begin : osg::Camera::DrawCallback
     {
@@ -25,6 +27,7 @@ struct OffscreenRenderer::GpuTimer : osg::Referenced
         explicit Begin(GpuTimer* t) : timer(t) {}
         void operator()(osg::RenderInfo& info) const override
         {
+            timer->drawStart = std::chrono::steady_clock::now();
             const osg::GLExtensions* ext = info.getState()->get<osg::GLExtensions>();
             if (!ext || !ext->glGenQueries || !ext->glGetQueryObjectui64v) return;
             timer->ext = ext;
@@ -39,6 +42,9 @@ struct OffscreenRenderer::GpuTimer : osg::Referenced
         explicit End(GpuTimer* t) : timer(t) {}
         void operator()(osg::RenderInfo&) const override
         {
+            glFinish();  // software GL rasterises here: draw time must include it
+            timer->drawMs =
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - timer->drawStart).count();
             if (timer->started) timer->ext->glEndQuery(GL_TIME_ELAPSED);
         }
     };
@@ -133,6 +139,7 @@ FrameTiming OffscreenRenderer::renderFrame()
     const auto start = std::chrono::steady_clock::now();
     _viewer->frame();
     timing.gpuMs = _timer->collectMs();
+    timing.drawMs = _timer->drawMs;
     timing.cpuMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     if (!_checked) {
         _scene->checkPrograms(*_viewer->getCamera()->getGraphicsContext()->getState());

@@ -22,7 +22,7 @@ bool isVolumeFile(const std::string& path);
 void registerPluginPath();
 
 /// Folder of shared volren resources (shaders/, data/): $VOLREN_SHARE_DIR, else the
-/// share/volren folder beside the library (build or install tree).
+/// share/volren folder of the tree (build or install) this library lies in.
 std::string shareDirectory();
 
 }  // namespace volren
