@@ -1,5 +1,7 @@
 #include "CommandLine.h"
 
+#include <volume_model/ParseNumber.h>
+
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
@@ -10,10 +12,8 @@ namespace {
 
 double parseNumber(const std::string& text, const std::string& what)
 {
-    char* end = nullptr;
-    const double v = std::strtod(text.c_str(), &end);
-    if (text.empty() || !end || *end != '\0' || !std::isfinite(v))
-        throw UsageError(what + ": '" + text + "' is not a number");
+    double v = 0.0;
+    if (!parseFiniteNumber(text, v)) throw UsageError(what + ": '" + text + "' is not a number");
     return v;
 }
 

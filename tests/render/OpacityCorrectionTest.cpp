@@ -17,6 +17,12 @@ struct SlabCase
     osg::Vec3d spacing;   ///< voxel spacing
 };
 
+void PrintTo(const SlabCase& c, std::ostream* out)
+{
+    *out << "step " << c.sampleFactor << " x d0, alpha " << c.alpha << ", spacing " << c.spacing.x() << ","
+         << c.spacing.y() << "," << c.spacing.z();
+}
+
 std::string caseName(const ::testing::TestParamInfo<SlabCase>& info)
 {
     auto clean = [](double v) {

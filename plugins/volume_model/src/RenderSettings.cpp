@@ -1,19 +1,10 @@
+#include <volume_model/ParseNumber.h>
 #include <volume_model/RenderSettings.h>
 
-#include <cmath>
-#include <cstdlib>
 
 namespace volren {
 
 namespace {
-
-bool parseNumber(const std::string& text, double& out)
-{
-    if (text.empty()) return false;
-    char* end = nullptr;
-    out = std::strtod(text.c_str(), &end);
-    return end && *end == '\0' && std::isfinite(out);
-}
 
 bool parseBool(const std::string& text, bool& out)
 {
@@ -39,19 +30,19 @@ bool RenderSettings::set(const std::string& key, const std::string& value, std::
 {
     double number = 0.0;
     if (key == "sampleFactor") {
-        if (!parseNumber(value, number) || !(number > 0.0) || number > 1e6)
+        if (!parseFiniteNumber(value, number) || !(number > 0.0) || number > 1e6)
             return error = "sampleFactor must be a number in (0, 1e6], got '" + value + "'", false;
         sampleDistanceFactor = number;
         return true;
     }
     if (key == "sampleDistance") {
-        if (!parseNumber(value, number) || number < 0.0)
+        if (!parseFiniteNumber(value, number) || number < 0.0)
             return error = "sampleDistance must be a number >= 0 (0 = use sampleFactor), got '" + value + "'", false;
         sampleDistance = number;
         return true;
     }
     if (key == "earlyTermination") {
-        if (!parseNumber(value, number) || !(number > 0.0) || number > 1.0)
+        if (!parseFiniteNumber(value, number) || !(number > 0.0) || number > 1.0)
             return error = "earlyTermination must be a number in (0, 1], got '" + value + "'", false;
         earlyTerminationThreshold = number;
         return true;

@@ -1,3 +1,4 @@
+#include <volume_model/ParseNumber.h>
 #include <volume_model/TransferFunctionFile.h>
 
 #include <cmath>
@@ -13,14 +14,6 @@
 namespace volren {
 
 namespace {
-
-bool parseDouble(const std::string& token, double& out)
-{
-    if (token.empty()) return false;
-    char* end = nullptr;
-    out = std::strtod(token.c_str(), &end);
-    return end && *end == '\0' && std::isfinite(out);
-}
 
 struct RawPoint
 {
@@ -48,15 +41,15 @@ osg::ref_ptr<TransferFunction> readTransferFunctionFile(const std::string& path)
         if (!(words >> first) || first[0] == '#') continue;
         if (first == "colour-scale" || first == "color-scale") {
             std::string s;
-            if (!(words >> s) || !parseDouble(s, scale) || !(scale > 0.0)) fail("colour-scale needs a positive number");
+            if (!(words >> s) || !parseFiniteNumber(s, scale) || !(scale > 0.0)) fail("colour-scale needs a positive number");
             continue;
         }
         RawPoint p{0.0, {0, 0, 0, 0}, lineNo};
-        if (!parseDouble(first, p.value)) fail("expected 'value r g b a', '" + first + "' is not a number");
+        if (!parseFiniteNumber(first, p.value)) fail("expected 'value r g b a', '" + first + "' is not a number");
         for (int c = 0; c < 4; ++c) {
             std::string s;
             if (!(words >> s)) fail("expected 'value r g b a', found only " + std::to_string(c + 1) + " numbers");
-            if (!parseDouble(s, p.rgba[c])) fail("component '" + s + "' is not a number");
+            if (!parseFiniteNumber(s, p.rgba[c])) fail("component '" + s + "' is not a number");
         }
         raw.push_back(p);  // the rest of the line is a comment
     }
