@@ -86,6 +86,11 @@ HeadlessContext::HeadlessContext()
     }
 
     // Prefer a compatibility context (OSG 3.6 issues some legacy calls); fall back to core.
+    // $VOLREN_GL_PROFILE = core | compatibility allows only that profile.
+    const char* profileEnv = std::getenv("VOLREN_GL_PROFILE");
+    const std::string profile = profileEnv ? profileEnv : "";
+    if (!profile.empty() && profile != "core" && profile != "compatibility")
+        throw std::runtime_error("VOLREN_GL_PROFILE must be 'core' or 'compatibility', got '" + profile + "'");
     struct Attempt { EGLint major, minor, profile; };
     const Attempt attempts[] = {{4, 5, EGL_CONTEXT_OPENGL_COMPATIBILITY_PROFILE_BIT},
                                 {4, 3, EGL_CONTEXT_OPENGL_COMPATIBILITY_PROFILE_BIT},
@@ -93,6 +98,8 @@ HeadlessContext::HeadlessContext()
                                 {4, 3, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT}};
     EGLContext context = EGL_NO_CONTEXT;
     for (const Attempt& a : attempts) {
+        const bool core = a.profile == EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT;
+        if ((profile == "core" && !core) || (profile == "compatibility" && core)) continue;
         const EGLint attribs[] = {EGL_CONTEXT_MAJOR_VERSION, a.major, EGL_CONTEXT_MINOR_VERSION, a.minor,
                                   EGL_CONTEXT_OPENGL_PROFILE_MASK, a.profile, EGL_NONE};
         context = eglCreateContext(display, config, EGL_NO_CONTEXT, attribs);
@@ -116,7 +123,8 @@ HeadlessContext::HeadlessContext()
 
     const char* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
     const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-    _description = "EGL " + used + ": OpenGL " + (version ? version : "?") + " / " + (renderer ? renderer : "?");
+    _description = "EGL " + used + ": OpenGL " + (version ? version : "?") + (_core ? " core profile" : "") + " / " +
+                   (renderer ? renderer : "?");
     OSG_INFO << "volren: " << _description << std::endl;
 }
 

@@ -2,6 +2,8 @@
 
 #include <osg/GLExtensions>
 #include <osgViewer/GraphicsWindow>
+#include <osgUtil/RenderBin>
+#include <osgViewer/Renderer>
 
 #include <chrono>
 #include <stdexcept>
@@ -72,6 +74,9 @@ OffscreenRenderer::OffscreenRenderer(int width, int height) : _width(width), _he
     _viewer->setKeyEventSetsDone(0);
     _viewer->setQuitEventSetsDone(false);
     _viewer->setReleaseContextAtEndOfFrameHint(false);
+    // A core profile has no fixed-function lighting: no viewer headlight there (volumes use
+    // the scene's own LightSources through their shaders).
+    if (_context->coreProfile()) _viewer->setLightingMode(osg::View::NO_LIGHT);
 
     osg::Camera* cam = _viewer->getCamera();
     osg::State* state = cam->getGraphicsContext()->getState();
@@ -96,6 +101,34 @@ OffscreenRenderer::OffscreenRenderer(int width, int height) : _width(width), _he
     _scene = new VolumeScene;
     _viewer->setSceneData(_scene.get());
     _viewer->realize();
+    if (_context->coreProfile()) useCoreProfileDefaults();
+}
+
+void OffscreenRenderer::useCoreProfileDefaults()
+{
+    // OSG's GL2 build puts fixed-function defaults (Material, AlphaFunc, LightModel) into the
+    // camera's and each SceneView's global state; a core profile rejects them, so keep only
+    // what the GLSL pipeline needs.
+    // Debian's OSG is a GL2 build that also issues legacy matrix calls (glLoadMatrix), which only
+    // raise GL error flags in a core profile; its per-state error polling would log them every
+    // frame, so it is off here. Our own shader failures are still caught by checkPrograms().
+    _viewer->getCamera()->getGraphicsContext()->getState()->setCheckForGLErrors(osg::State::NEVER_CHECK_GL_ERRORS);
+    osg::ref_ptr<osg::StateSet> cameraState = new osg::StateSet;
+    cameraState->setMode(GL_DEPTH_TEST, osg::StateAttribute::ON);
+    _viewer->getCamera()->setStateSet(cameraState.get());
+    // The DepthSortedBin prototype carries an AlphaFunc in fixed-function builds (process-wide;
+    // meaningless for GLSL, which never reads it).
+    if (osgUtil::RenderBin* sorted = osgUtil::RenderBin::getRenderBinPrototype("DepthSortedBin"))
+        sorted->setStateSet(nullptr);
+    auto* renderer = dynamic_cast<osgViewer::Renderer*>(_viewer->getCamera()->getRenderer());
+    if (!renderer) return;
+    for (unsigned int i = 0; i < 2; ++i) {
+        osgUtil::SceneView* view = renderer->getSceneView(i);
+        if (!view) continue;
+        osg::ref_ptr<osg::StateSet> defaults = new osg::StateSet;
+        defaults->setMode(GL_DEPTH_TEST, osg::StateAttribute::ON);
+        view->setGlobalStateSet(defaults.get());
+    }
 }
 
 OffscreenRenderer::~OffscreenRenderer()

@@ -79,7 +79,8 @@ void BindContext::texture(const std::string& name, osg::Texture* tex)
 {
     auto unit = textureUnits.find(name);
     if (unit == textureUnits.end()) return;  // not used by this composition
-    stateSet.setTextureAttributeAndModes(unit->second, tex, osg::StateAttribute::ON);
+    // Attribute only: shaders sample it; fixed-function texture modes are invalid in core profiles.
+    stateSet.setTextureAttribute(unit->second, tex, osg::StateAttribute::ON);
     uniform(name, unit->second);
 }
 

@@ -84,6 +84,7 @@ osg::ref_ptr<osg::Geometry> makeBoxGeometry(const osg::Vec3d& size)
     geometry->setName("volren volume proxy");
     geometry->setUseDisplayList(false);
     geometry->setUseVertexBufferObjects(true);
+    geometry->setUseVertexArrayObject(true);  // core profiles draw nothing without a bound VAO
     geometry->setVertexArray(corners.get());
     geometry->addPrimitiveSet(new osg::DrawElementsUShort(GL_TRIANGLES, 36, faces));
     return geometry;

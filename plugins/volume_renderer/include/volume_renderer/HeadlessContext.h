@@ -5,7 +5,8 @@ namespace volren {
 
 /// An OpenGL 4.3+ context without any display: EGL's device platform on GPU machines,
 /// Mesa's surfaceless platform (llvmpipe) elsewhere. $VOLREN_EGL_PLATFORM = device |
-/// surfaceless forces one. The context is current on the creating thread.
+/// surfaceless forces one; $VOLREN_GL_PROFILE = core | compatibility forces the profile
+/// (default: compatibility, else core). The context is current on the creating thread.
 class HeadlessContext
 {
 public:

@@ -48,6 +48,7 @@ public:
 
 private:
     struct GpuTimer;
+    void useCoreProfileDefaults();
     std::unique_ptr<HeadlessContext> _context;
     osg::ref_ptr<osgViewer::Viewer> _viewer;
     osg::ref_ptr<VolumeScene> _scene;
