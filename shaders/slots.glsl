@@ -1,20 +1,10 @@
 // volren shader-function slots: the one place where every slot signature is declared.
 // Positions are in volume texture space [0,1]^3 (voxel i's centre at (i+0.5)/n); a ray is
-// origin + t*dir with t in [tNear, tFar]. Every slot has a `null` implementation.
+// origin + t*dir with t in [tNear, tFar]. Directions handed to lighting (normal, viewDir,
+// lightDir) are unit vectors in the VolumeNode's local axes (world units, spacing applied).
+// Every slot has a `null` implementation that does nothing observable.
 
 // RaySetup: owns main(); builds this fragment's ray, calls the slots below, writes volren_fragColor.
-
-// ClipRay: shortens the ray interval before marching (tNear >= tFar leaves nothing).
-void volren_clipRay(vec3 origin, vec3 dir, inout float tNear, inout float tFar);
-
-// Jitter: offset of the first sample as a fraction of one step, in [0,1).
-float volren_jitter(vec2 fragCoord);
-
-// RayTraversal: marches [tNear, tFar] and returns premultiplied (associated) RGBA.
-vec4 volren_traverse(vec3 origin, vec3 dir, float tNear, float tFar, float jitter);
-
-// ClipPosition: true where the sample at pos is clipped away.
-bool volren_clipPosition(vec3 pos);
 
 // Reconstruction: the GL texel value (normalised stored scalar) at pos.
 float volren_fetchScalar(vec3 pos);
@@ -23,5 +13,33 @@ float volren_fetchScalar(vec3 pos);
 // (the smallest voxel spacing). NaN maps to fully transparent.
 vec4 volren_classify(float scalar);
 
+// GradientInput: the field whose gradient is taken (raw scalar or classified opacity).
+float volren_gradientInput(vec3 pos);
+
+// Gradient: gradient of the GradientInput per world unit, in the node's local axes.
+vec3 volren_gradient(vec3 pos);
+
+// Illumination: light reflected towards viewDir by a unit light from lightDir.
+vec3 volren_illuminate(vec3 normal, vec3 viewDir, vec3 lightDir, vec3 albedo);
+
+// Shadowing: fraction of the light from lightDir that reaches pos.
+float volren_shadow(vec3 pos, vec3 lightDir);
+
 // Shading: emitted colour of a classified sample seen along viewDir (towards the eye).
 vec3 volren_shade(vec3 pos, vec3 viewDir, vec4 classified);
+
+// ClipPosition (template over clip shapes): true where the sample at pos is clipped away.
+bool volren_clipPosition(vec3 pos);
+
+// Acceleration: the next ray parameter >= t worth sampling (empty-space skipping).
+float volren_skip(vec3 origin, vec3 dir, float t, float tFar);
+
+// Jitter: offset of the first sample as a fraction of one step, in [0,1).
+float volren_jitter(vec2 fragCoord);
+
+// ClipRay (template over clip planes): shortens the ray interval before marching.
+void volren_clipRay(vec3 origin, vec3 dir, inout float tNear, inout float tFar);
+
+// RayTraversal: marches [tNear, tFar] and returns premultiplied (associated) RGBA; tHit is the
+// ray parameter of an opaque surface it found (isosurface), or -1.
+vec4 volren_traverse(vec3 origin, vec3 dir, float tNear, float tFar, float jitter, out float tHit);

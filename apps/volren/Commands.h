@@ -10,5 +10,9 @@ int renderCommand(const std::vector<std::string>& args, bool defaultRun);
 int infoCommand(const std::vector<std::string>& args);
 /// `volren view [INPUT]`: an interactive window; returns the exit code.
 int viewCommand(const std::vector<std::string>& args);
+/// `volren shader [INPUT] [--set ...]`: prints each volume's composed ray caster and key.
+int shaderCommand(const std::vector<std::string>& args);
+/// `volren permutations [--list] [--compile] [--render] ...`: the composition sweep.
+int permutationsCommand(const std::vector<std::string>& args);
 
 }  // namespace volren::app

@@ -10,7 +10,12 @@
 #include <osgDB/FileUtils>
 #include <osgDB/ReadFile>
 
+#include <volume_renderer/ShaderFunctionRegistry.h>
+#include <volume_renderer/Slots.h>
+
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 
 namespace volren::app {
 
@@ -39,7 +44,7 @@ std::string defaultInput()
     return osgDB::concatPaths(shareDirectory(), "data/ch2.nii.gz");
 }
 
-osg::ref_ptr<osg::Node> loadScene(const RenderOptions& options)
+osg::ref_ptr<VolumeScene> loadScene(const RenderOptions& options)
 {
     registerPluginPath();
     const std::string input = options.input.empty() ? defaultInput() : options.input;
@@ -57,18 +62,64 @@ osg::ref_ptr<osg::Node> loadScene(const RenderOptions& options)
         scene = result.getNode();
     }
 
-    const std::vector<VolumeNode*> nodes = volumeNodes(*scene);
+    osg::ref_ptr<VolumeScene> root = dynamic_cast<VolumeScene*>(scene.get());
+    if (!root) {
+        root = new VolumeScene;
+        root->addChild(scene.get());
+    }
+    const std::vector<VolumeNode*> nodes = volumeNodes(*root);
     if (!options.tfFile.empty()) {
         osg::ref_ptr<TransferFunction> tf = readTransferFunctionFile(options.tfFile);
         for (VolumeNode* node : nodes) node->setTransferFunction(tf.get());
     }
+    const ShaderFunctionRegistry& registry = ShaderFunctionRegistry::instance();
     for (const auto& [key, value] : options.settings) {
-        RenderSettings probe;
         std::string error;
+        bool passKey = false;
+        for (const auto& entry : VolumeScene::keys()) passKey = passKey || entry.first == key;
+        if (passKey) {
+            if (!root->set(key, value, error)) throw UsageError("--set " + key + "=" + value + ": " + error);
+            continue;
+        }
+        RenderSettings probe;
         if (!probe.set(key, value, error)) throw UsageError("--set " + key + "=" + value + ": " + error);
+        if (const std::string slot = RenderSettings::slotForKey(key); !slot.empty()) {
+            const std::string name = probe.functions.at(slot);
+            if (!registry.find(slot, name)) {
+                std::string known;
+                for (const auto& n : registry.names(slot)) known += (known.empty() ? "" : ", ") + n;
+                throw UsageError("--set " + key + "=" + value + ": slot " + slot + " has no implementation '" + name +
+                                 "' (known: " + known + ")");
+            }
+        }
         for (VolumeNode* node : nodes) node->settings.set(key, value, error);
     }
-    return scene;
+    return root;
+}
+
+std::string settingsHelp()
+{
+    std::ostringstream out;
+    const RenderSettings defaults;
+    out << "Per-volume settings (--set KEY=VALUE; value shown is the default, empty = chosen by the scene):\n";
+    for (const auto& [key, what] : RenderSettings::keys())
+        out << "  " << std::left << std::setw(18) << key << std::setw(14) << defaults.get(key) << what << "\n";
+    out << "Pass settings:\n";
+    osg::ref_ptr<VolumeScene> scene = new VolumeScene;
+    for (const auto& [key, what] : VolumeScene::keys())
+        out << "  " << std::left << std::setw(18) << key << std::setw(14) << scene->get(key) << what << "\n";
+    out << "Implementations per slot (default first):\n";
+    const ShaderFunctionRegistry& registry = ShaderFunctionRegistry::instance();
+    for (const SlotInfo& s : slots()) {
+        std::string key;
+        for (const auto& entry : RenderSettings::keys())
+            if (RenderSettings::slotForKey(entry.first) == s.name) key = entry.first;
+        out << "  " << std::left << std::setw(16) << s.name << "(" << key << "): " << s.defaultFunction;
+        for (const auto& name : registry.names(s.name))
+            if (name != s.defaultFunction) out << ", " << name;
+        out << (s.isTemplate ? "   [one instance per clip shape, chosen by the scene]" : "") << "\n";
+    }
+    return out.str();
 }
 
 void setUpCamera(osg::Camera& camera, const osg::Node& scene, const RenderOptions& options, double aspect)

@@ -1,6 +1,8 @@
 #pragma once
 #include "CommandLine.h"
 
+#include <volume_renderer/VolumeScene.h>
+
 #include <osg/Camera>
 #include <osg/Node>
 
@@ -9,9 +11,15 @@ namespace volren::app {
 /// Path of the embedded default volume (share/volren/data/ch2.nii.gz).
 std::string defaultInput();
 
-/// Loads INPUT (a scene file, or a bare volume file that gets the default scene), then applies
-/// --tf and --set to every VolumeNode; throws std::runtime_error / UsageError naming the file.
-osg::ref_ptr<osg::Node> loadScene(const RenderOptions& options);
+/// Loads INPUT (a scene file, or a bare volume file that gets the default scene) under a
+/// VolumeScene, then applies --tf and --set (pass settings to the VolumeScene, the others to
+/// every VolumeNode, implementation names checked against the registry); throws
+/// std::runtime_error / UsageError naming the file or setting.
+osg::ref_ptr<VolumeScene> loadScene(const RenderOptions& options);
+
+/// Text of `volren render --help-settings`: every setting with its value, and every slot's
+/// implementations.
+std::string settingsHelp();
 
 /// Sets the camera's view and projection from the options, defaulting to a view that frames
 /// the scene's bound from the front-right-above (+x, +y, +z up: anterior for RAS volumes).

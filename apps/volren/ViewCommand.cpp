@@ -19,12 +19,7 @@ int viewCommand(const std::vector<std::string>& args)
     if (!display || !*display)
         throw std::runtime_error("volren view needs a display and DISPLAY is not set; use 'volren render' for images");
 
-    osg::ref_ptr<osg::Node> scene = loadScene(options);
-    osg::ref_ptr<VolumeScene> root = dynamic_cast<VolumeScene*>(scene.get());
-    if (!root) {
-        root = new VolumeScene;
-        root->addChild(scene.get());
-    }
+    osg::ref_ptr<VolumeScene> root = loadScene(options);
     osgViewer::Viewer viewer;
     viewer.setThreadingModel(osgViewer::ViewerBase::SingleThreaded);
     viewer.setUpViewInWindow(50, 50, options.width, options.height);

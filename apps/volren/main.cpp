@@ -1,6 +1,7 @@
 // volren: render volumes in OpenSceneGraph scenes, headless or in a window.
 #include "CommandLine.h"
 #include "Commands.h"
+#include "SceneSetup.h"
 
 #include <iostream>
 #include <string>
@@ -16,7 +17,10 @@ const char* const usage =
     "                [--set KEY=VALUE ...] [--frames N] [--stats FILE.json]\n"
     "  volren info VOLUMEFILE          dims, type, spacing, value range, histogram\n"
     "  volren view [INPUT] [options]   interactive window (needs a display)\n"
-    "settings (--set): sampleFactor, sampleDistance, earlyTermination, jitter\n";
+    "  volren shader [INPUT] [--set KEY=VALUE ...]   print each volume's composed ray caster\n"
+    "  volren permutations [--list] [--compile | --render] [--pairwise] [--max-instances N]\n"
+    "                [--max-lights N] [--shard I/N] [--first I] [--count N] [--stats FILE.json]\n"
+    "  volren render --help-settings   every --set KEY with its default, every implementation\n";
 
 }  // namespace
 
@@ -26,7 +30,18 @@ int main(int argc, char** argv)
     const std::string command = args.empty() ? "" : args.front();
     if (!args.empty()) args.erase(args.begin());
     try {
+        for (const std::string& a : args)
+            if (a == "--help-settings") {
+                std::cout << volren::app::settingsHelp();
+                return 0;
+            }
+        if (command == "--help-settings") {
+            std::cout << volren::app::settingsHelp();
+            return 0;
+        }
         if (command.empty()) return volren::app::renderCommand({}, true);
+        if (command == "shader") return volren::app::shaderCommand(args);
+        if (command == "permutations") return volren::app::permutationsCommand(args);
         if (command == "render") return volren::app::renderCommand(args, false);
         if (command == "info") return volren::app::infoCommand(args);
         if (command == "view") return volren::app::viewCommand(args);

@@ -3,8 +3,10 @@
 // volume texture space; it is intersected with the box [0,1]^3. Because it starts on the near
 // plane, a camera inside the volume (or a near plane cutting the box) marches only what lies
 // in front of the camera, for perspective and orthographic projections alike.
+// A traversal that reports a surface (tHit >= 0) sets the fragment depth there.
 in vec4 volren_vClip;
 flat in mat4 volren_clipToTexture;
+flat in mat4 volren_textureToClip;
 out vec4 volren_fragColor;
 
 void main()
@@ -27,7 +29,16 @@ void main()
     volren_clipRay(origin, dir, tNear, tFar);
     if (!(tNear < tFar)) discard;
 
-    vec4 color = volren_traverse(origin, dir, tNear, tFar, volren_jitter(gl_FragCoord.xy));
+    float tHit;
+    vec4 color = volren_traverse(origin, dir, tNear, tFar, volren_jitter(gl_FragCoord.xy), tHit);
     if (any(isnan(color))) color = vec4(0.0);  // never let NaN reach the framebuffer
+    if (volren_writesDepth) {
+        if (tHit < 0.0) discard;  // no surface on this ray: leave colour and depth alone
+        // Depth of the hit: the near-to-far parameter maps back through the projection.
+        vec4 clip = volren_textureToClip * vec4(origin + dir * tHit, 1.0);
+        gl_FragDepth = clamp(0.5 * (clip.z / clip.w) + 0.5, 0.0, 1.0);
+    } else {
+        gl_FragDepth = gl_FragCoord.z;
+    }
     volren_fragColor = color;
 }

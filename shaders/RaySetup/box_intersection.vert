@@ -7,6 +7,7 @@ uniform mat4 osg_ModelViewProjectionMatrix;
 uniform vec3 volren_worldSize;
 out vec4 volren_vClip;
 flat out mat4 volren_clipToTexture;
+flat out mat4 volren_textureToClip;
 
 void main()
 {
@@ -16,6 +17,7 @@ void main()
                                vec4(-0.5 * volren_worldSize, 1.0));
     mat4 textureToClip = osg_ModelViewProjectionMatrix * textureToLocal;
     volren_clipToTexture = inverse(textureToClip);
+    volren_textureToClip = textureToClip;
     gl_Position = osg_ModelViewProjectionMatrix * osg_Vertex;
     volren_vClip = gl_Position;
 }

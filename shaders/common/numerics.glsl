@@ -34,3 +34,18 @@ float volren_opacityFromDepth(float tau)
 {
     return -volren_expm1(-tau);
 }
+
+// Unit normal from a gradient, facing the viewer (two-sided lighting). A zero, tiny, huge or
+// NaN gradient reuses the last good normal along the ray (the view direction at first).
+vec3 volren_lastNormal = vec3(0.0);
+vec3 volren_normalFromGradient(vec3 gradient, vec3 viewDir)
+{
+    float scale = max(max(abs(gradient.x), abs(gradient.y)), abs(gradient.z));
+    if (scale > 1e-30 && !isinf(scale) && !isnan(scale)) {
+        vec3 n = -normalize(gradient / scale);  // normals point from dense to empty
+        volren_lastNormal = dot(n, viewDir) < 0.0 ? -n : n;
+    } else if (volren_lastNormal == vec3(0.0)) {
+        volren_lastNormal = viewDir;
+    }
+    return volren_lastNormal;
+}

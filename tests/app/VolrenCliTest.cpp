@@ -77,7 +77,7 @@ TEST(VolrenCli, RenderHonoursSizeFramesStatsAndTransferFunction)
     // An opaque pure red TF: every pixel where a ray meets the box is exactly red.
     std::ofstream(dir + "/red.tf") << "0 255 0 0 255\n255 255 0 0 255\n";
     const CliRun run = volren("render '" + volume + "' -o '" + dir + "/out.png' --size 96x64 --frames 3 --stats '" +
-                           dir + "/stats.json' --tf '" + dir + "/red.tf' --background 0,0,1 --ortho 400 --set jitter=off");
+                           dir + "/stats.json' --tf '" + dir + "/red.tf' --background 0,0,1 --ortho 400 --set jitter=off --set lighting=off");
     ASSERT_EQ(run.exitCode, 0) << run.output;
     const Image img = readImage(dir + "/out.png");
     ASSERT_EQ(img.width, 96);

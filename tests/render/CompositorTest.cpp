@@ -18,10 +18,10 @@ namespace {
 TEST(Compositor, KeyNamesEverySlotWithDefaultsFilledIn)
 {
     Composition c;
-    c.choice["Jitter"] = "hash";
+    c.choice["Jitter"] = "texture";
     const std::string key = c.key();
     for (const SlotInfo& s : slots()) EXPECT_NE(key.find(s.name + "="), std::string::npos) << s.name;
-    EXPECT_NE(key.find("Jitter=hash;"), std::string::npos);
+    EXPECT_NE(key.find("Jitter=texture;"), std::string::npos);
     EXPECT_NE(key.find("RayTraversal=dvr_front_to_back;"), std::string::npos);
     EXPECT_NE(key, Composition{}.key());
 }
@@ -30,8 +30,8 @@ TEST(Compositor, SameCompositionIsBuiltOnceAndReused)
 {
     ShaderCompositor compositor;
     Composition a, b;
-    a.choice["Jitter"] = "hash";
-    b.choice["Jitter"] = "hash";
+    a.choice["Jitter"] = "null";
+    b.choice["Jitter"] = "null";
     auto pa = compositor.program(a);
     auto pb = compositor.program(b);
     EXPECT_EQ(pa.get(), pb.get());
@@ -55,7 +55,8 @@ TEST(Compositor, ComposedSourceHoldsEachChosenFileOnceWithLineMarkers)
     const std::string decl = "uniform vec3 volren_worldSize;";
     EXPECT_NE(src.find(decl), std::string::npos);
     EXPECT_EQ(src.find(decl), src.rfind(decl));
-    ASSERT_EQ(p->sourceNames.size(), 3u + slots().size());
+    // header, numerics, slots.glsl, the traversal's march.glsl include, one per slot
+    ASSERT_EQ(p->sourceNames.size(), 4u + slots().size());
     EXPECT_EQ(p->sourceNames.back(), "RaySetup/box_intersection.glsl");
     EXPECT_EQ(p->textureUnits.at("volren_volume"), 0);
     EXPECT_EQ(p->textureUnits.at("volren_transferFunction"), 1);
@@ -83,21 +84,15 @@ TEST(Compositor, UnknownImplementationIsAnErrorNamingSlotAndKnownOnes)
 TEST(Compositor, MissingShaderFileNamesImplementationAndPath)
 {
     ShaderFunctionRegistry registry;
-    registerRaySetupFunctions(registry);
-    registerClipRayFunctions(registry);
-    registerRayTraversalFunctions(registry);
-    registerClipPositionFunctions(registry);
-    registerReconstructionFunctions(registry);
-    registerClassificationFunctions(registry);
-    registerShadingFunctions(registry);
-    registry.add({"Jitter", "null", "Jitter/does_not_exist.glsl", "", {}, {}, {}, nullptr});
+    registry.addBuiltins();
+    registry.add({"Jitter", "hash", "Jitter/does_not_exist.glsl", "", {}, {}, {}, {}, nullptr, false});
     ShaderCompositor compositor(registry);
     try {
         compositor.program(Composition{});
         FAIL() << "expected an error";
     } catch (const std::runtime_error& e) {
         const std::string what = e.what();
-        EXPECT_NE(what.find("slot Jitter, implementation null"), std::string::npos) << what;
+        EXPECT_NE(what.find("slot Jitter, implementation hash"), std::string::npos) << what;
         EXPECT_NE(what.find("Jitter/does_not_exist.glsl"), std::string::npos) << what;
     }
 }
@@ -130,11 +125,11 @@ TEST(Compositor, DriverLogLinesAreMappedToShaderFiles)
 
 TEST(Compositor, SceneAnalysisPicksJitterFromTheNodeSettings)
 {
+    osg::ref_ptr<VolumeScene> scene = new VolumeScene;
     osg::ref_ptr<VolumeNode> node = new VolumeNode;
-    node->settings.jitter = true;
-    EXPECT_EQ(VolumeScene::chooseComposition(*node).functionFor("Jitter"), "hash");
-    node->settings.jitter = false;
-    EXPECT_EQ(VolumeScene::chooseComposition(*node).functionFor("Jitter"), "null");
+    EXPECT_EQ(scene->chooseComposition(*node, {}).functionFor("Jitter"), "hash");
+    node->settings.functions["Jitter"] = "null";
+    EXPECT_EQ(scene->chooseComposition(*node, {}).functionFor("Jitter"), "null");
 }
 
 TEST(Compositor, SampleDistanceIsAFactorOfTheSmallestSpacingAndBounded)

@@ -43,7 +43,7 @@ Pixels renderNoise(bool withNonFinite)
     osg::ref_ptr<VolumeNode> node = new VolumeNode;
     node->setVolume(volume.get());
     node->setTransferFunction(tf.get());
-    node->settings.jitter = true;
+    node->settings.functions["Jitter"] = "hash";
     const osg::Matrixd view =
         osg::Matrixd::lookAt(osg::Vec3d(40, -50, 30), osg::Vec3d(0, 0, 0), osg::Vec3d(0, 0, 1));
     return RenderFixture::render(node.get(), 64, 48, view, osg::Matrixd::perspective(40, 64.0 / 48, 1, 500),

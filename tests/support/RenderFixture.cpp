@@ -26,12 +26,17 @@ Pixels RenderFixture::render(osg::Node* scene, int width, int height, const osg:
     r.camera()->setComputeNearFarMode(osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR);
     r.camera()->setViewMatrix(view);
     r.camera()->setProjectionMatrix(projection);
-    r.renderFrame();
+    const FrameTiming timing = r.renderFrame();
+    for (const std::string& e : timing.glErrors) ADD_FAILURE() << "GL error: " << e;
     Pixels p;
     p.width = width;
     p.height = height;
     const auto* data = reinterpret_cast<const osg::Vec4*>(r.image()->data());
     p.rgba.assign(data, data + std::size_t(width) * height);
+    if (const osg::Image* depth = r.depthImage()) {
+        const auto* d = reinterpret_cast<const float*>(depth->data());
+        p.depth.assign(d, d + std::size_t(width) * height);
+    }
     return p;
 }
 
@@ -50,7 +55,7 @@ osg::ref_ptr<VolumeNode> RenderFixture::volumeNode(Volume* volume, TransferFunct
     osg::ref_ptr<VolumeNode> node = new VolumeNode;
     node->setVolume(volume);
     node->setTransferFunction(tf);
-    node->settings.jitter = jitter;
+    node->settings.functions["Jitter"] = jitter ? "hash" : "null";
     return node;
 }
 

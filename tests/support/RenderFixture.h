@@ -14,6 +14,7 @@ struct Pixels
 {
     int width = 0, height = 0;
     std::vector<osg::Vec4> rgba;
+    std::vector<float> depth;  ///< window depth per pixel, when depth read-back was on
     const osg::Vec4& at(int x, int y) const { return rgba[std::size_t(y) * width + x]; }
 };
 

@@ -1,58 +1,213 @@
 #include <volume_model/ParseNumber.h>
 #include <volume_model/RenderSettings.h>
 
+#include <cmath>
+#include <sstream>
 
 namespace volren {
 
 namespace {
 
-bool parseBool(const std::string& text, bool& out)
+/// Setting keys that choose an implementation, and the slot each one chooses for.
+const std::vector<std::pair<std::string, std::string>>& slotKeys()
 {
-    if (text == "1" || text == "true" || text == "on" || text == "yes") return out = true, true;
-    if (text == "0" || text == "false" || text == "off" || text == "no") return out = false, true;
-    return false;
+    static const std::vector<std::pair<std::string, std::string>> keys = {
+        {"raysetup", "RaySetup"},         {"clipray", "ClipRay"},
+        {"jitter", "Jitter"},             {"traversal", "RayTraversal"},
+        {"clipposition", "ClipPosition"}, {"reconstruction", "Reconstruction"},
+        {"classification", "Classification"}, {"gradient", "Gradient"},
+        {"gradientinput", "GradientInput"}, {"shading", "Shading"},
+        {"illumination", "Illumination"}, {"shadowing", "Shadowing"},
+        {"acceleration", "Acceleration"}};
+    return keys;
+}
+
+/// Short names users type, mapped to implementation names.
+std::string canonicalFunction(const std::string& slot, const std::string& value)
+{
+    if (value == "off" || value == "none" || value == "0" || value == "false") return "null";
+    if (slot == "Jitter" && (value == "on" || value == "1" || value == "true")) return "hash";
+    if (slot == "RayTraversal" && value == "dvr") return "dvr_front_to_back";
+    if (slot == "Gradient" && value == "central-9") return "central9";
+    if (slot == "Illumination" && (value == "cooktorrance" || value == "cook-torrance")) return "cook_torrance";
+    if (slot == "Illumination" && (value == "blinnphong" || value == "blinn-phong" || value == "phong")) return "blinn_phong";
+    return value;
+}
+
+bool isIdentifier(const std::string& s)
+{
+    if (s.empty()) return false;
+    for (char c : s)
+        if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_')) return false;
+    return true;
+}
+
+std::string lower(std::string s)
+{
+    for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return s;
+}
+
+const std::vector<std::string>& debugViewNames()
+{
+    static const std::vector<std::string> names = {"scalar", "position", "classification", "gradient",
+                                                   "normal", "view", "light"};
+    return names;
+}
+
+std::string number(double v)
+{
+    std::ostringstream out;
+    out << v;
+    return out.str();
 }
 
 }  // namespace
 
 bool RenderSettings::operator==(const RenderSettings& o) const
 {
-    return sampleDistanceFactor == o.sampleDistanceFactor && sampleDistance == o.sampleDistance &&
-           earlyTerminationThreshold == o.earlyTerminationThreshold && jitter == o.jitter;
+    auto same = [](double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); };
+    return same(sampleDistanceFactor, o.sampleDistanceFactor) && same(sampleDistance, o.sampleDistance) &&
+           same(earlyTerminationThreshold, o.earlyTerminationThreshold) && same(isoValue, o.isoValue) &&
+           same(shadingThreshold, o.shadingThreshold) && same(ambient, o.ambient) && same(specular, o.specular) &&
+           same(shininess, o.shininess) && same(roughness, o.roughness) && same(threshold, o.threshold) &&
+           debugView == o.debugView &&
+           functions == o.functions && forceNull == o.forceNull;
 }
 
-std::vector<std::string> RenderSettings::keys()
+std::string RenderSettings::slotForKey(const std::string& key)
 {
-    return {"sampleFactor", "sampleDistance", "earlyTermination", "jitter"};
+    const std::string k = lower(key);
+    for (const auto& [name, slot] : slotKeys())
+        if (name == k) return slot;
+    return {};
+}
+
+std::vector<std::pair<std::string, std::string>> RenderSettings::keys()
+{
+    std::vector<std::pair<std::string, std::string>> out = {
+        {"samplerate", "samples per smallest voxel spacing (= 1 / sampleFactor)"},
+        {"sampleFactor", "step as a factor of the smallest voxel spacing"},
+        {"sampleDistance", "step in world units (0 = use sampleFactor)"},
+        {"earlyTermination", "opacity at which front-to-back marching stops (1 = never)"},
+        {"isoValue", "isosurface data value (empty = the TF's first opaque value)"},
+        {"shadingThreshold", "opacity below which lighting_threshold shading leaves samples unlit"},
+        {"ambient", "ambient light fraction"},
+        {"specular", "specular strength"},
+        {"shininess", "Blinn-Phong exponent"},
+        {"roughness", "Cook-Torrance roughness (0..1]"},
+        {"threshold", "threshold classification level, 0..1 of the value window"},
+        {"debugView", "debug shading view: scalar, position, classification, gradient, normal, view, light"},
+        {"forceNull", "comma-separated slots forced to their null implementation"}};
+    for (const auto& [name, slot] : slotKeys()) out.push_back({name, "implementation of slot " + slot});
+    return out;
+}
+
+std::string RenderSettings::get(const std::string& key) const
+{
+    const std::string k = lower(key);
+    if (const std::string slot = slotForKey(k); !slot.empty()) {
+        if (forceNull.count(slot)) return "null (forced)";
+        auto it = functions.find(slot);
+        return it == functions.end() ? std::string() : it->second;
+    }
+    if (k == "samplerate") return number(1.0 / sampleDistanceFactor);
+    if (k == "samplefactor") return number(sampleDistanceFactor);
+    if (k == "sampledistance") return number(sampleDistance);
+    if (k == "earlytermination") return number(earlyTerminationThreshold);
+    if (k == "isovalue") return std::isnan(isoValue) ? std::string() : number(isoValue);
+    if (k == "shadingthreshold") return number(shadingThreshold);
+    if (k == "ambient") return number(ambient);
+    if (k == "specular") return number(specular);
+    if (k == "shininess") return number(shininess);
+    if (k == "roughness") return number(roughness);
+    if (k == "threshold") return number(threshold);
+    if (k == "debugview") return debugViewNames()[std::size_t(debugView)];
+    if (k == "forcenull") {
+        std::string list;
+        for (const auto& s : forceNull) list += (list.empty() ? "" : ",") + s;
+        return list;
+    }
+    return {};
 }
 
 bool RenderSettings::set(const std::string& key, const std::string& value, std::string& error)
 {
-    double number = 0.0;
-    if (key == "sampleFactor") {
-        if (!parseFiniteNumber(value, number) || !(number > 0.0) || number > 1e6)
-            return error = "sampleFactor must be a number in (0, 1e6], got '" + value + "'", false;
-        sampleDistanceFactor = number;
+    const std::string k = lower(key);
+    if (const std::string slot = slotForKey(k); !slot.empty()) {
+        const std::string name = canonicalFunction(slot, lower(value));
+        if (!isIdentifier(name)) return error = key + " must name an implementation, got '" + value + "'", false;
+        functions[slot] = name;
         return true;
     }
-    if (key == "sampleDistance") {
-        if (!parseFiniteNumber(value, number) || number < 0.0)
-            return error = "sampleDistance must be a number >= 0 (0 = use sampleFactor), got '" + value + "'", false;
-        sampleDistance = number;
+    if (k == "forcenull") {
+        std::set<std::string> slots;
+        std::stringstream list(value);
+        std::string item;
+        while (std::getline(list, item, ',')) {
+            if (item.empty()) continue;
+            bool known = false;
+            for (const auto& entry : slotKeys()) known = known || entry.second == item;
+            if (!known) return error = "forceNull: unknown slot '" + item + "'", false;
+            slots.insert(item);
+        }
+        forceNull = slots;
         return true;
     }
-    if (key == "earlyTermination") {
-        if (!parseFiniteNumber(value, number) || !(number > 0.0) || number > 1.0)
-            return error = "earlyTermination must be a number in (0, 1], got '" + value + "'", false;
-        earlyTerminationThreshold = number;
+    struct Numeric
+    {
+        const char* key;
+        double* field;
+        double lo, hi;
+        bool openLow;
+    };
+    const Numeric numerics[] = {
+        {"samplefactor", &sampleDistanceFactor, 0.0, 1e6, true},
+        {"sampledistance", &sampleDistance, 0.0, 1e300, false},
+        {"earlytermination", &earlyTerminationThreshold, 0.0, 1.0, true},
+        {"shadingthreshold", &shadingThreshold, 0.0, 1.0, false},
+        {"ambient", &ambient, 0.0, 1.0, false},
+        {"specular", &specular, 0.0, 10.0, false},
+        {"shininess", &shininess, 1.0, 1e4, false},
+        {"roughness", &roughness, 0.0, 1.0, true},
+        {"threshold", &threshold, 0.0, 1.0, false},
+    };
+    double v = 0.0;
+    if (k == "samplerate") {
+        if (!parseFiniteNumber(value, v) || !(v > 0.0) || v < 1e-6)
+            return error = "samplerate must be a number of samples per voxel > 0, got '" + value + "'", false;
+        sampleDistanceFactor = 1.0 / v;
         return true;
     }
-    if (key == "jitter") {
-        if (!parseBool(value, jitter)) return error = "jitter must be on/off (1/0, true/false), got '" + value + "'", false;
+    if (k == "debugview") {
+        const auto& names = debugViewNames();
+        for (std::size_t i = 0; i < names.size(); ++i)
+            if (lower(value) == names[i] || value == std::to_string(i)) return debugView = int(i), true;
+        return error = "debugView must be one of scalar, position, classification, gradient, normal, view, light; got '" +
+                       value + "'",
+               false;
+    }
+    if (k == "isovalue") {
+        if (value.empty()) return isoValue = std::numeric_limits<double>::quiet_NaN(), true;
+        if (!parseFiniteNumber(value, v)) return error = "isoValue must be a number, got '" + value + "'", false;
+        isoValue = v;
+        return true;
+    }
+    for (const Numeric& n : numerics) {
+        if (k != n.key) continue;
+        const bool ok = parseFiniteNumber(value, v) && (n.openLow ? v > n.lo : v >= n.lo) && v <= n.hi;
+        if (!ok) {
+            std::ostringstream why;
+            why << key << " must be a number in " << (n.openLow ? "(" : "[") << n.lo << ", " << n.hi << "], got '"
+                << value << "'";
+            error = why.str();
+            return false;
+        }
+        *n.field = v;
         return true;
     }
     std::string known;
-    for (const auto& k : keys()) known += (known.empty() ? "" : ", ") + k;
+    for (const auto& entry : keys()) known += (known.empty() ? "" : ", ") + entry.first;
     error = "unknown setting '" + key + "' (known: " + known + ")";
     return false;
 }

@@ -5,7 +5,10 @@
 #include <osgUtil/RenderBin>
 #include <osgViewer/Renderer>
 
+#include <EGL/egl.h>
+
 #include <chrono>
+#include <cstring>
 #include <stdexcept>
 
 #ifndef GL_TIME_ELAPSED
@@ -61,12 +64,45 @@ struct OffscreenRenderer::GpuTimer : osg::Referenced
     }
 };
 
+/// Collects the driver's error messages through GL debug output (GL 4.3 core).
+struct OffscreenRenderer::ErrorLog
+{
+    std::vector<std::string> messages;
+    bool core = false;
+
+    static void GL_APIENTRY callback(GLenum, GLenum type, GLuint, GLenum, GLsizei length, const GLchar* text,
+                                     const void* self)
+    {
+        if (type != GL_DEBUG_TYPE_ERROR) return;
+        auto* log = static_cast<ErrorLog*>(const_cast<void*>(self));
+        std::string message(text, length > 0 ? std::size_t(length) : std::strlen(text));
+        // Debian's OSG is a GL2 build: in core profiles it makes one legacy call per frame.
+        if (log->core && message.find("unsupported function called") != std::string::npos) return;
+        log->messages.push_back(message);
+    }
+
+    void install(bool coreProfile)
+    {
+        core = coreProfile;
+        using Install = void(GL_APIENTRY*)(void(GL_APIENTRY*)(GLenum, GLenum, GLuint, GLenum, GLsizei, const GLchar*,
+                                                               const void*),
+                                            const void*);
+        auto install = reinterpret_cast<Install>(eglGetProcAddress("glDebugMessageCallback"));
+        if (!install) return;
+        glEnable(GL_DEBUG_OUTPUT);
+        glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);
+        install(&ErrorLog::callback, this);
+    }
+};
+
 OffscreenRenderer::OffscreenRenderer(int width, int height) : _width(width), _height(height)
 {
     if (width <= 0 || height <= 0 || width > 16384 || height > 16384)
         throw std::runtime_error("image size must be 1..16384 pixels per side, got " + std::to_string(width) + "x" +
                                  std::to_string(height));
     _context = std::make_unique<HeadlessContext>();
+    _errors = std::make_unique<ErrorLog>();
+    _errors->install(_context->coreProfile());
 
     _viewer = new osgViewer::Viewer;
     _viewer->setThreadingModel(osgViewer::ViewerBase::SingleThreaded);
@@ -91,6 +127,9 @@ OffscreenRenderer::OffscreenRenderer(int width, int height) : _width(width), _he
     cam->setRenderTargetImplementation(osg::Camera::FRAME_BUFFER_OBJECT);
     cam->attach(osg::Camera::COLOR_BUFFER, _image.get());
     cam->attach(osg::Camera::DEPTH_BUFFER, GL_DEPTH_COMPONENT24);
+    _depth = new osg::Image;
+    _depth->allocateImage(width, height, 1, GL_DEPTH_COMPONENT, GL_FLOAT);
+    _depth->setInternalTextureFormat(GL_DEPTH_COMPONENT24);
     cam->setClearColor(osg::Vec4(0.0f, 0.0f, 0.0f, 0.0f));
     cam->setProjectionMatrixAsPerspective(30.0, double(width) / height, 0.1, 1000.0);
 
@@ -101,6 +140,9 @@ OffscreenRenderer::OffscreenRenderer(int width, int height) : _width(width), _he
     _scene = new VolumeScene;
     _viewer->setSceneData(_scene.get());
     _viewer->realize();
+    // GL errors are read once per frame by renderFrame() (OSG's own per-bin polling would
+    // swallow them into log lines).
+    state->setCheckForGLErrors(osg::State::NEVER_CHECK_GL_ERRORS);
     if (_context->coreProfile()) useCoreProfileDefaults();
 }
 
@@ -142,6 +184,17 @@ OffscreenRenderer::~OffscreenRenderer()
     }
 }
 
+void OffscreenRenderer::setReadDepth(bool read)
+{
+    if (read == _readDepth) return;
+    _readDepth = read;
+    osg::Camera* cam = _viewer->getCamera();
+    cam->detach(osg::Camera::DEPTH_BUFFER);
+    if (read) cam->attach(osg::Camera::DEPTH_BUFFER, _depth.get());
+    else cam->attach(osg::Camera::DEPTH_BUFFER, GL_DEPTH_COMPONENT24);
+    cam->dirtyAttachmentMap();
+}
+
 void OffscreenRenderer::setScene(osg::Node* root)
 {
     osg::ref_ptr<VolumeScene> scene = dynamic_cast<VolumeScene*>(root);
@@ -152,6 +205,11 @@ void OffscreenRenderer::setScene(osg::Node* root)
     _scene = scene;
     _viewer->setSceneData(_scene.get());
     _checked = false;
+}
+
+osg::State* OffscreenRenderer::state()
+{
+    return _viewer->getCamera()->getGraphicsContext()->getState();
 }
 
 osg::Camera* OffscreenRenderer::camera()
@@ -170,8 +228,12 @@ FrameTiming OffscreenRenderer::renderFrame()
     if (!_context->makeCurrent()) throw std::runtime_error("EGL: cannot make the context current");
     FrameTiming timing;
     const auto start = std::chrono::steady_clock::now();
+    while (glGetError() != GL_NO_ERROR) {}  // flags of earlier, unrelated calls
+    _errors->messages.clear();
     _viewer->frame();
     timing.gpuMs = _timer->collectMs();
+    while (glGetError() != GL_NO_ERROR) {}
+    timing.glErrors = _errors->messages;
     timing.drawMs = _timer->drawMs;
     timing.cpuMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     if (!_checked) {

@@ -4,7 +4,9 @@
 #include <osg/Notify>
 #include <osg/Shader>
 
+#include <cstdio>
 #include <fstream>
+#include <functional>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -23,23 +25,54 @@ std::string readText(const std::string& path)
     return text.str();
 }
 
+std::string replaceAll(std::string text, const std::string& from, const std::string& to)
+{
+    for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
+        text.replace(at, from.size(), to);
+    return text;
+}
+
+/// Renames whole-word identifier `from` to `to` in GLSL source.
+std::string renameIdentifier(const std::string& text, const std::string& from, const std::string& to)
+{
+    return std::regex_replace(text, std::regex("\\b" + from + "\\b"), to);
+}
+
 const char* const glslVersion = "#version 430 core\n";
 
 }  // namespace
 
+bool ComposedProgram::needs(AuxData aux) const
+{
+    for (const Binding& b : bindings)
+        for (AuxData a : b.function->needs)
+            if (a == aux) return true;
+    return false;
+}
+
 std::string Composition::functionFor(const std::string& slot) const
 {
     if (auto it = choice.find(slot); it != choice.end()) return it->second;
-    for (const SlotInfo& s : slots())
-        if (s.name == slot) return s.defaultFunction;
+    if (const SlotInfo* s = findSlot(slot)) return s->defaultFunction;
     return {};
 }
 
 std::string Composition::key() const
 {
     std::string key;
-    for (const SlotInfo& s : slots()) key += s.name + "=" + functionFor(s.name) + ";";
-    return key;
+    for (const SlotInfo& s : slots()) {
+        key += s.name + "=";
+        if (s.isTemplate) {
+            key += "[";
+            if (auto it = instances.find(s.name); it != instances.end())
+                for (std::size_t i = 0; i < it->second.size(); ++i) key += (i ? "," : "") + it->second[i];
+            key += "]";
+        } else {
+            key += functionFor(s.name);
+        }
+        key += ";";
+    }
+    return key + "lights=" + std::to_string(lightCount) + ";";
 }
 
 ShaderCompositor::ShaderCompositor(const ShaderFunctionRegistry& registry) : _registry(registry) {}
@@ -64,27 +97,44 @@ std::shared_ptr<const ComposedProgram> ShaderCompositor::program(const Compositi
 
 std::shared_ptr<const ComposedProgram> ShaderCompositor::build(const Composition& composition) const
 {
-    for (const auto& [slot, name] : composition.choice) {
-        bool known = false;
-        for (const SlotInfo& s : slots()) known = known || s.name == slot;
-        if (!known) throw std::runtime_error("composition names unknown slot '" + slot + "'");
+    for (const auto& entry : composition.choice) {
+        const SlotInfo* s = findSlot(entry.first);
+        if (!s) throw std::runtime_error("composition names unknown slot '" + entry.first + "'");
+        if (s->isTemplate) throw std::runtime_error("slot " + s->name + " takes instances, not a single choice");
     }
+    for (const auto& entry : composition.instances) {
+        const SlotInfo* s = findSlot(entry.first);
+        if (!s || !s->isTemplate) throw std::runtime_error("'" + entry.first + "' is not a template slot");
+    }
+    if (composition.lightCount > 64) throw std::runtime_error("at most 64 lights per volume");
 
     auto result = std::make_shared<ComposedProgram>();
     result->key = composition.key();
-
-    // Pick one implementation per slot.
-    const ShaderFunction* raySetup = nullptr;
-    for (const SlotInfo& s : slots()) {
-        const std::string name = composition.functionFor(s.name);
-        const ShaderFunction* f = _registry.find(s.name, name);
+    auto lookup = [&](const std::string& slot, const std::string& name) {
+        const ShaderFunction* f = _registry.find(slot, name);
         if (!f) {
             std::string known;
-            for (const auto& n : _registry.names(s.name)) known += (known.empty() ? "" : ", ") + n;
-            throw std::runtime_error("slot " + s.name + ": no implementation '" + name + "' (known: " + known + ")");
+            for (const auto& n : _registry.names(slot)) known += (known.empty() ? "" : ", ") + n;
+            throw std::runtime_error("slot " + slot + ": no implementation '" + name + "' (known: " + known + ")");
         }
-        result->functions.push_back(f);
+        return f;
+    };
+
+    // Pick the implementations: one per ordinary slot, one per instance of template slots.
+    const ShaderFunction* raySetup = nullptr;
+    for (const SlotInfo& s : slots()) {
+        if (s.isTemplate) {
+            auto it = composition.instances.find(s.name);
+            const std::vector<std::string> none;
+            const std::vector<std::string>& names = it == composition.instances.end() ? none : it->second;
+            for (std::size_t k = 0; k < names.size(); ++k)
+                result->bindings.push_back({lookup(s.name, names[k]), "_" + std::to_string(k), int(k)});
+            continue;
+        }
+        const ShaderFunction* f = lookup(s.name, composition.functionFor(s.name));
+        result->bindings.push_back({f, "", -1});
         if (s.name == "RaySetup") raySetup = f;
+        if (s.name == "RayTraversal") result->writesDepth = f->writesDepth;
     }
 
     // Declarations: each uniform and sampler once; a clash in type is an error naming both.
@@ -99,43 +149,82 @@ std::shared_ptr<const ComposedProgram> ShaderCompositor::build(const Composition
         if (inserted) decls << "uniform " << type << " " << name << ";  // " << owner->slot << "/" << owner->name << "\n";
     };
     int nextUnit = 0;
-    for (const ShaderFunction* f : result->functions) {
-        for (const TextureDecl& t : f->textures) {
-            if (!result->textureUnits.count(t.name)) result->textureUnits[t.name] = nextUnit++;
-            declare(t.name, t.samplerType, f);
+    for (const Binding& b : result->bindings) {
+        for (const TextureDecl& t : b.function->textures) {
+            const std::string name = t.name + b.suffix;
+            if (!result->textureUnits.count(name)) result->textureUnits[name] = nextUnit++;
+            declare(name, t.samplerType, b.function);
         }
-        for (const UniformDecl& u : f->uniforms) declare(u.name, u.glslType, f);
+        for (const UniformDecl& u : b.function->uniforms) {
+            const std::string name = u.name + b.suffix;
+            declare(u.arraySize.empty() ? name : name + "[" + u.arraySize + "]", u.glslType, b.function);
+        }
     }
 
     // Source strings: 0 = generated header; then common files; then one per implementation.
     std::ostringstream src;
     src << glslVersion;
     src << "// volren composed ray caster: " << result->key << "\n";
+    src << "#define VOLREN_LIGHT_COUNT " << composition.lightCount << "\n";
+    src << "#define VOLREN_LIGHT_ARRAY " << std::max(1u, composition.lightCount) << "\n";
     result->sourceNames.push_back("<generated declarations>");
     src << decls.str();
-    auto append = [&](const std::string& relative) {
+    auto append = [&](const std::string& name, const std::string& text) {
         const int index = int(result->sourceNames.size());
-        result->sourceNames.push_back(relative);
-        src << "#line 1 " << index << "\n" << readText(_registry.locate(relative)) << "\n";
+        result->sourceNames.push_back(name);
+        src << "// ---- " << name << " ----\n#line 1 " << index << "\n" << text << "\n";
     };
-    append("common/numerics.glsl");
-    append("slots.glsl");
-    for (const ShaderFunction* f : result->functions) {
+    auto source = [&](const ShaderFunction* f) {
         try {
-            append(f->file);
+            return readText(_registry.locate(f->file));
         } catch (const std::exception& e) {
             throw std::runtime_error("slot " + f->slot + ", implementation " + f->name + ": " + e.what());
         }
+    };
+    std::set<std::string> included;
+    auto includes = [&](const ShaderFunction* f) {
+        for (const std::string& file : f->includes)
+            if (included.insert(file).second) append(file, readText(_registry.locate(file)));
+    };
+    append("common/numerics.glsl", readText(_registry.locate("common/numerics.glsl")));
+    append("slots.glsl", readText(_registry.locate("slots.glsl")));
+    for (const SlotInfo& s : slots()) {
+        std::vector<const Binding*> mine;
+        for (const Binding& b : result->bindings)
+            if (b.function->slot == s.name) mine.push_back(&b);
+        if (!s.isTemplate) {
+            includes(mine.front()->function);
+            append(mine.front()->function->file, source(mine.front()->function));
+            continue;
+        }
+        // Template: each instance renamed apart, then the slot function dispatches over them.
+        std::string calls;
+        for (const Binding* b : mine) {
+            std::string text = renameIdentifier(source(b->function), s.function, s.function + b->suffix);
+            for (const UniformDecl& u : b->function->uniforms) text = renameIdentifier(text, u.name, u.name + b->suffix);
+            for (const TextureDecl& t : b->function->textures) text = renameIdentifier(text, t.name, t.name + b->suffix);
+            append(b->function->file + " (instance " + std::to_string(b->instance) + ")", text);
+            calls += (calls.empty() || s.join.empty() ? "" : s.join) +
+                     replaceAll(s.call, "{k}", std::to_string(b->instance));
+        }
+        const std::string body = mine.empty() ? s.empty : replaceAll(s.wrap, "{calls}", calls);
+        append("<" + s.name + " dispatcher over " + std::to_string(mine.size()) + " instances>",
+               "// " + s.name + ": template over " + std::to_string(mine.size()) + " instances\n" + s.signature +
+                   "\n{\n" + body + "}\n");
     }
     result->fragmentSource = src.str();
 
+    // GL object labels are limited to 256 characters (OSG labels programs by name), so the
+    // name is a short digest; the full key stays in ComposedProgram::key.
+    char label[64];
+    std::snprintf(label, sizeof(label), "volren ray caster %016zx", std::hash<std::string>()(result->key));
     osg::ref_ptr<osg::Program> program = new osg::Program;
-    program->setName(result->key);
+    program->setName(label);
     const std::string vertexFile = raySetup->vertexFile;
     osg::ref_ptr<osg::Shader> vertex = new osg::Shader(osg::Shader::VERTEX, readText(_registry.locate(vertexFile)));
     vertex->setName(vertexFile);
     osg::ref_ptr<osg::Shader> fragment = new osg::Shader(osg::Shader::FRAGMENT, result->fragmentSource);
-    fragment->setName("composed:" + result->key);
+    fragment->setName(std::string(label) + " fragment");
     program->addShader(vertex);
     program->addShader(fragment);
     program->addBindFragDataLocation("volren_fragColor", 0);

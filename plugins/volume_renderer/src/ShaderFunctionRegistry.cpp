@@ -1,11 +1,17 @@
 #include <volume_renderer/ShaderFunctionRegistry.h>
+#include <volume_renderer/Slots.h>
+
+#include <volume_model/ClipNode.h>
 
 #include <volume_model/ReadVolume.h>
 
 #include <osgDB/FileNameUtils>
 #include <osgDB/FileUtils>
 
+#include <osg/Notify>
+
 #include <cstdlib>
+#include <dlfcn.h>
 #include <sstream>
 #include <stdexcept>
 
@@ -15,17 +21,91 @@ ShaderFunctionRegistry& ShaderFunctionRegistry::instance()
 {
     static ShaderFunctionRegistry* registry = [] {
         auto* r = new ShaderFunctionRegistry;
-        registerRaySetupFunctions(*r);
-        registerClipRayFunctions(*r);
-        registerJitterFunctions(*r);
-        registerRayTraversalFunctions(*r);
-        registerClipPositionFunctions(*r);
-        registerReconstructionFunctions(*r);
-        registerClassificationFunctions(*r);
-        registerShadingFunctions(*r);
+        r->addBuiltins();
+        for (const std::string& failure : r->loadPlugins()) OSG_WARN << "volren: " << failure << std::endl;
+        r->addShaderDirectoryFunctions();
         return r;
     }();
     return *registry;
+}
+
+void ShaderFunctionRegistry::addBuiltins()
+{
+    registerRaySetupFunctions(*this);
+    registerClipRayFunctions(*this);
+    registerJitterFunctions(*this);
+    registerRayTraversalFunctions(*this);
+    registerClipPositionFunctions(*this);
+    registerReconstructionFunctions(*this);
+    registerClassificationFunctions(*this);
+    registerShadingFunctions(*this);
+    registerGradientFunctions(*this);
+    registerIlluminationFunctions(*this);
+    registerShadowingFunctions(*this);
+    registerAccelerationFunctions(*this);
+}
+
+namespace {
+
+std::vector<std::string> pathList(const char* variable)
+{
+    std::vector<std::string> dirs;
+    if (const char* env = std::getenv(variable); env && *env) {
+        std::stringstream list(env);
+        std::string dir;
+        while (std::getline(list, dir, ':'))
+            if (!dir.empty()) dirs.push_back(dir);
+    }
+    return dirs;
+}
+
+}  // namespace
+
+std::vector<std::string> ShaderFunctionRegistry::loadPlugins()
+{
+    using RegisterFunction = void (*)(ShaderFunctionRegistry&);
+    std::vector<std::string> failures;
+    for (const std::string& dir : pathList("VOLREN_FUNCTION_PATH")) {
+        for (const std::string& file : osgDB::getDirectoryContents(dir)) {
+            if (file.rfind("volren_functions_", 0) != 0 || osgDB::getFileExtension(file) != "so") continue;
+            const std::string path = osgDB::concatPaths(dir, file);
+            void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+            if (!handle) {
+                failures.push_back(path + ": " + dlerror());
+                continue;
+            }
+            auto registerFunctions = reinterpret_cast<RegisterFunction>(dlsym(handle, "volrenRegisterShaderFunctions"));
+            if (!registerFunctions) {
+                failures.push_back(path + ": no volrenRegisterShaderFunctions symbol");
+                continue;
+            }
+            registerFunctions(*this);  // the library stays loaded: its bind functions are used
+        }
+    }
+    return failures;
+}
+
+std::size_t ShaderFunctionRegistry::addShaderDirectoryFunctions()
+{
+    std::size_t added = 0;
+    for (const std::string& dir : pathList("VOLREN_SHADER_PATH")) {
+        for (const SlotInfo& slot : slots()) {
+            for (const std::string& file : osgDB::getDirectoryContents(osgDB::concatPaths(dir, slot.name))) {
+                if (osgDB::getFileExtension(file) != "glsl") continue;
+                const std::string name = osgDB::getNameLessExtension(file);
+                if (find(slot.name, name)) continue;  // an override of a registered one
+                const ShaderFunction* base = find(slot.name, "null");
+                ShaderFunction f;
+                f.slot = slot.name;
+                f.name = name;
+                f.file = slot.name + "/" + file;
+                if (base) f.vertexFile = base->vertexFile;
+                add(f);
+                ++added;
+            }
+        }
+    }
+    return added;
 }
 
 void ShaderFunctionRegistry::add(ShaderFunction function)
@@ -52,13 +132,7 @@ std::vector<std::string> ShaderFunctionRegistry::names(const std::string& slot) 
 
 std::vector<std::string> ShaderFunctionRegistry::shaderDirectories() const
 {
-    std::vector<std::string> dirs;
-    if (const char* env = std::getenv("VOLREN_SHADER_PATH"); env && *env) {
-        std::stringstream list(env);
-        std::string dir;
-        while (std::getline(list, dir, ':'))
-            if (!dir.empty()) dirs.push_back(dir);
-    }
+    std::vector<std::string> dirs = pathList("VOLREN_SHADER_PATH");
     dirs.push_back(osgDB::concatPaths(shareDirectory(), "shaders"));
     return dirs;
 }
@@ -75,13 +149,19 @@ std::string ShaderFunctionRegistry::locate(const std::string& relative) const
                              "; set VOLREN_SHADER_PATH or VOLREN_SHARE_DIR)");
 }
 
-void BindContext::texture(const std::string& name, osg::Texture* tex)
+const ClipInfo& BindContext::clip() const
 {
-    auto unit = textureUnits.find(name);
-    if (unit == textureUnits.end()) return;  // not used by this composition
+    static const ClipInfo none;
+    return instance >= 0 && std::size_t(instance) < clips.size() ? clips[std::size_t(instance)] : none;
+}
+
+void BindContext::texture(const std::string& base, osg::Texture* tex)
+{
+    auto unit = textureUnits.find(name(base));
+    if (unit == textureUnits.end() || !tex) return;  // not used by this composition
     // Attribute only: shaders sample it; fixed-function texture modes are invalid in core profiles.
     stateSet.setTextureAttribute(unit->second, tex, osg::StateAttribute::ON);
-    uniform(name, unit->second);
+    uniform(base, unit->second);
 }
 
 }  // namespace volren

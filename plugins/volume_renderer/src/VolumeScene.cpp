@@ -1,15 +1,20 @@
+#include <volume_renderer/Slots.h>
 #include <volume_renderer/VolumeScene.h>
 #include <volume_renderer/VolumeTextures.h>
 
+#include <volume_model/ClipMaskNode.h>
+#include <volume_model/ClipPlaneNode.h>
+
 #include <osg/BlendFunc>
 #include <osg/CullFace>
+#include <osg/Depth>
 #include <osg/Geode>
 #include <osg/Geometry>
+#include <osg/LightSource>
 #include <osg/Notify>
 #include <osgUtil/CullVisitor>
 
 #include <algorithm>
-#include <set>
 #include <stdexcept>
 
 namespace volren {
@@ -19,13 +24,15 @@ struct VolumeScene::VolumeGL
     osg::ref_ptr<const Volume> volume;  // keeps the voxels the texture image points at alive
     osg::ref_ptr<osg::Texture3D> texture;
     unsigned int modified = 0;
+    unsigned int lastCull = 0;
 };
 
-struct VolumeScene::TransferGL
+struct VolumeScene::TableGL
 {
     osg::ref_ptr<const TransferFunction> transfer;
     osg::ref_ptr<osg::Texture1D> texture;
     unsigned int modified = 0;
+    unsigned int lastCull = 0;
 };
 
 struct VolumeScene::Proxy
@@ -40,24 +47,32 @@ struct VolumeScene::Proxy
 
 namespace {
 
-/// Finds the VolumeNodes below a VolumeScene with their matrices relative to it.
-class VolumeCollector : public osg::NodeVisitor
+/// Finds volumes, lights and clip shapes below a VolumeScene, with matrices relative to it.
+class SceneCollector : public osg::NodeVisitor
 {
 public:
-    explicit VolumeCollector(unsigned int mask) : osg::NodeVisitor(TRAVERSE_ACTIVE_CHILDREN)
-    {
-        setTraversalMask(mask);
-    }
-    std::vector<std::pair<VolumeNode*, osg::Matrix>> found;
+    explicit SceneCollector(unsigned int mask) : osg::NodeVisitor(TRAVERSE_ACTIVE_CHILDREN) { setTraversalMask(mask); }
+    std::vector<std::pair<VolumeNode*, osg::Matrix>> volumes;
+    std::vector<std::pair<const osg::LightSource*, osg::Matrix>> lights;
+    std::vector<std::pair<const ClipNode*, osg::Matrix>> clips;
 
     void apply(osg::Node& node) override
     {
         if (auto* v = dynamic_cast<VolumeNode*>(&node)) {
             if (v->getVolume() && v->getTransferFunction() && v->getVolume()->voxelCount() > 0)
-                found.emplace_back(v, _matrix);
+                volumes.emplace_back(v, _matrix);
+            return;
+        }
+        if (auto* c = dynamic_cast<ClipNode*>(&node)) {
+            clips.emplace_back(c, _matrix);
             return;
         }
         traverse(node);
+    }
+    void apply(osg::LightSource& light) override
+    {
+        if (light.getLight()) lights.emplace_back(&light, _matrix);
+        traverse(light);
     }
     void apply(osg::Transform& transform) override
     {
@@ -90,18 +105,142 @@ osg::ref_ptr<osg::Geometry> makeBoxGeometry(const osg::Vec3d& size)
     return geometry;
 }
 
+/// Volume texture space -> the VolumeNode's local coordinates.
+osg::Matrixd textureToLocal(const Volume& volume)
+{
+    const osg::Vec3d size = volume.worldSize();
+    return osg::Matrixd::translate(-0.5, -0.5, -0.5) * osg::Matrixd::scale(size);
+}
+
+/// What the scene offers `volumeMatrix`'s volume (all matrices relative to the VolumeScene).
+SceneOffer offerFor(const VolumeNode& node, const osg::Matrix& volumeMatrix, const SceneCollector& scene,
+                    const osg::Matrix& sceneModelView)
+{
+    SceneOffer offer;
+    const osg::Matrixd sceneToLocal = osg::Matrixd::inverse(volumeMatrix);
+    const osg::Matrixd eyeToLocal = osg::Matrixd::inverse(volumeMatrix * sceneModelView);
+    for (const auto& [source, matrix] : scene.lights) {
+        const osg::Light* light = source->getLight();
+        const osg::Vec4d p = light->getPosition();
+        const osg::Matrixd toLocal =
+            source->getReferenceFrame() == osg::LightSource::ABSOLUTE_RF ? eyeToLocal : matrix * sceneToLocal;
+        LightInfo info;
+        if (p.w() == 0.0) {
+            osg::Vec3d d = osg::Matrixd::transform3x3(osg::Vec3d(p.x(), p.y(), p.z()), toLocal);
+            d.normalize();
+            info.position = osg::Vec4d(d, 0.0);
+        } else {
+            info.position = osg::Vec4d(osg::Vec3d(p.x(), p.y(), p.z()) / p.w() * toLocal, 1.0);
+        }
+        const osg::Vec4 c = light->getDiffuse();
+        info.colour = osg::Vec3d(c.r(), c.g(), c.b());
+        offer.lights.push_back(info);
+    }
+    const Volume& volume = *node.getVolume();
+    const osg::Matrixd texToScene = textureToLocal(volume) * volumeMatrix;
+    for (const auto& [clip, matrix] : scene.clips) {
+        const osg::Matrixd texToShape = texToScene * osg::Matrixd::inverse(matrix);
+        std::array<osg::Vec3d, 8> corners;
+        for (int i = 0; i < 8; ++i) corners[i] = osg::Vec3d(i & 1, (i >> 1) & 1, (i >> 2) & 1) * texToShape;
+        if (clip->leavesUnchanged(corners)) continue;
+        const ClipInfo info{clip, texToShape};
+        if (dynamic_cast<const ClipPlaneNode*>(clip)) offer.planes.push_back(info);
+        else offer.shapes.push_back(info);
+    }
+    return offer;
+}
+
 }  // namespace
 
 VolumeScene::VolumeScene() = default;
 
-VolumeScene::VolumeScene(const VolumeScene& other, const osg::CopyOp& copyop) : osg::Group(other, copyop) {}
+VolumeScene::VolumeScene(const VolumeScene& other, const osg::CopyOp& copyop)
+    : osg::Group(other, copyop), lighting(other.lighting), forceNull(other.forceNull)
+{
+}
 
 VolumeScene::~VolumeScene() = default;
 
-Composition VolumeScene::chooseComposition(const VolumeNode& node)
+std::vector<std::pair<std::string, std::string>> VolumeScene::keys()
 {
+    return {{"lighting", "on/off: off ignores the scene's lights, so the lighting slots become null"},
+            {"forceNullAll", "comma-separated slots forced to null for every volume"}};
+}
+
+std::string VolumeScene::get(const std::string& key) const
+{
+    if (key == "lighting") return lighting ? "on" : "off";
+    if (key == "forceNullAll") {
+        std::string list;
+        for (const auto& s : forceNull) list += (list.empty() ? "" : ",") + s;
+        return list;
+    }
+    return {};
+}
+
+bool VolumeScene::set(const std::string& key, const std::string& value, std::string& error)
+{
+    if (key == "lighting") {
+        if (value == "on" || value == "1" || value == "true") return lighting = true, true;
+        if (value == "off" || value == "0" || value == "false") return lighting = false, true;
+        return error = "lighting must be on or off, got '" + value + "'", false;
+    }
+    if (key == "forceNullAll") {
+        RenderSettings probe;  // same slot list and validation as the per-node key
+        if (!probe.set("forceNull", value, error)) return false;
+        forceNull = probe.forceNull;
+        return true;
+    }
+    error = "'" + key + "' is not a pass setting";
+    return false;
+}
+
+Composition VolumeScene::chooseComposition(const VolumeNode& node, const SceneOffer& offer) const
+{
+    const RenderSettings& s = node.settings;
+    auto forcedNull = [&](const std::string& slot) { return s.forceNull.count(slot) || forceNull.count(slot); };
+    auto chosen = [&](const std::string& slot, const std::string& fallback) -> std::string {
+        if (forcedNull(slot)) return "null";
+        auto it = s.functions.find(slot);
+        return it == s.functions.end() ? fallback : it->second;
+    };
     Composition c;
-    c.choice["Jitter"] = node.settings.jitter ? "hash" : "null";
+    const unsigned int lights = lighting ? unsigned(std::min<std::size_t>(offer.lights.size(), maxLights)) : 0;
+    const std::string illumination = chosen("Illumination", lights > 0 ? "blinn_phong" : "null");
+    const std::string shading = chosen("Shading", lights > 0 && illumination != "null" ? "lighting" : "null");
+    const std::string traversal = chosen("RayTraversal", "dvr_front_to_back");
+    const bool needGradient = shading != "null" || traversal == "gmip";
+    const std::string gradient = chosen("Gradient", needGradient ? "central" : "null");
+    c.choice["Illumination"] = illumination;
+    c.choice["Shading"] = shading;
+    c.choice["RayTraversal"] = traversal;
+    c.choice["Gradient"] = gradient;
+    c.choice["GradientInput"] = chosen("GradientInput", gradient != "null" ? "scalar" : "null");
+    for (const char* slot : {"RaySetup", "Reconstruction", "Classification", "Jitter", "Shadowing", "Acceleration"})
+        c.choice[slot] = chosen(slot, findSlot(slot)->defaultFunction);
+    c.lightCount = shading == "null" || illumination == "null" ? 0 : lights;
+    if (shading == "debug") c.lightCount = lights;
+
+    // Clip planes shorten rays (exact, cheap) unless ray clipping is off; then they clip samples.
+    auto rayChoice = s.functions.find("ClipRay");
+    auto positionChoice = s.functions.find("ClipPosition");
+    const bool planesPerSample = forcedNull("ClipRay") || (rayChoice != s.functions.end() && rayChoice->second == "null") ||
+                                 (positionChoice != s.functions.end() && positionChoice->second == "plane");
+    const bool positionOff = forcedNull("ClipPosition") ||
+                             (positionChoice != s.functions.end() && positionChoice->second == "null");
+    std::vector<std::string>& rayInstances = c.instances["ClipRay"];
+    std::vector<std::string>& positionInstances = c.instances["ClipPosition"];
+    for (std::size_t i = 0; i < offer.planes.size(); ++i) {
+        if (!planesPerSample) rayInstances.push_back("plane");
+        else if (!positionOff) positionInstances.push_back("plane");
+    }
+    if (!positionOff)
+        for (const ClipInfo& shape : offer.shapes) {
+            const char* kind = dynamic_cast<const ClipMaskNode*>(shape.node) ? "mask"
+                             : shape.node->className() == std::string("ClipBoxNode") ? "box"
+                                                                                    : "ellipsoid";
+            positionInstances.push_back(kind);
+        }
     return c;
 }
 
@@ -126,7 +265,38 @@ std::vector<std::string> VolumeScene::compositionKeys() const
     return _lastKeys;
 }
 
-VolumeScene::Proxy& VolumeScene::updateProxy(VolumeNode& node)
+std::vector<std::pair<std::string, std::shared_ptr<const ComposedProgram>>> VolumeScene::programs() const
+{
+    std::lock_guard<std::mutex> lock(_mutex);
+    std::vector<std::pair<std::string, std::shared_ptr<const ComposedProgram>>> out;
+    for (const auto& [node, proxy] : _proxies)
+        if (proxy.lastCull == _cullCount && proxy.program) out.emplace_back(node->getName(), proxy.program);
+    return out;
+}
+
+std::size_t VolumeScene::auxiliaryTextureCount() const
+{
+    std::lock_guard<std::mutex> lock(_mutex);
+    return _volumeTextures.size() + _tables.size();
+}
+
+osg::Texture* VolumeScene::volumeTexture(const Volume& volume, bool nearest)
+{
+    VolumeGL& gl = _volumeTextures[{&volume, nearest}];
+    if (!gl.texture || gl.modified != volume.modifiedCount()) {
+        gl.volume = &volume;
+        gl.texture = makeVolumeTexture(volume);
+        if (nearest) {
+            gl.texture->setFilter(osg::Texture::MIN_FILTER, osg::Texture::NEAREST);
+            gl.texture->setFilter(osg::Texture::MAG_FILTER, osg::Texture::NEAREST);
+        }
+        gl.modified = volume.modifiedCount();
+    }
+    gl.lastCull = _cullCount;
+    return gl.texture.get();
+}
+
+VolumeScene::Proxy& VolumeScene::updateProxy(VolumeNode& node, const SceneOffer& offer)
 {
     const Volume& volume = *node.getVolume();
     const TransferFunction& tf = *node.getTransferFunction();
@@ -139,40 +309,66 @@ VolumeScene::Proxy& VolumeScene::updateProxy(VolumeNode& node)
         geode->addDrawable(proxy.geometry.get());
         proxy.transform->removeChildren(0, proxy.transform->getNumChildren());
         proxy.transform->addChild(geode.get());
-        osg::StateSet* ss = proxy.geometry->getOrCreateStateSet();
-        ss->setAttributeAndModes(new osg::CullFace(osg::CullFace::FRONT), osg::StateAttribute::ON);
-        ss->setAttributeAndModes(new osg::BlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA), osg::StateAttribute::ON);
-        ss->setMode(GL_DEPTH_TEST, osg::StateAttribute::OFF);
-        ss->setRenderBinDetails(10, "DepthSortedBin");
+        proxy.geometry->getOrCreateStateSet();
         proxy.key.clear();
     }
 
-    // Shared GL data: one texture per Volume and per TransferFunction, re-made on change.
-    VolumeGL& vgl = _volumeTextures[&volume];
-    if (!vgl.texture || vgl.modified != volume.modifiedCount()) {
-        vgl.volume = &volume;
-        vgl.texture = makeVolumeTexture(volume);
-        vgl.modified = volume.modifiedCount();
-    }
-    TransferGL& tgl = _transferTextures[&tf];
-    if (!tgl.texture || tgl.modified != tf.modifiedCount()) {
-        tgl.transfer = &tf;
-        tgl.texture = makeTransferFunctionTexture(tf);
-        tgl.modified = tf.modifiedCount();
-    }
-
-    std::shared_ptr<const ComposedProgram> program = _compositor.program(chooseComposition(node));
+    std::shared_ptr<const ComposedProgram> program =
+        _compositor.program(forcedComposition ? *forcedComposition : chooseComposition(node, offer));
     osg::StateSet& ss = *proxy.geometry->getStateSet();
-    if (proxy.key != program->key) {
+    if (proxy.key != program->key) {  // new composition: state from scratch
+        ss.clear();
+        ss.setAttributeAndModes(new osg::CullFace(osg::CullFace::FRONT), osg::StateAttribute::ON);
+        ss.setAttributeAndModes(new osg::BlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA), osg::StateAttribute::ON);
+        ss.setRenderBinDetails(10, "DepthSortedBin");
+        if (program->writesDepth) {  // an opaque surface: depth-tested and written like geometry
+            ss.setAttributeAndModes(new osg::Depth(osg::Depth::LESS, 0.0, 1.0, true), osg::StateAttribute::ON);
+        } else {
+            ss.setMode(GL_DEPTH_TEST, osg::StateAttribute::OFF);
+        }
         ss.setAttributeAndModes(program->program.get(), osg::StateAttribute::ON);
         proxy.key = program->key;
         proxy.program = program;
     }
-    BindContext context{node, volume, tf, node.settings, effectiveSampleDistance(node), ss, program->textureUnits, {}};
-    context.aux[AuxData::VolumeTexture] = vgl.texture;
-    context.aux[AuxData::TransferFunctionTable] = tgl.texture;
-    for (const ShaderFunction* f : program->functions)
-        if (f->bind) f->bind(context);
+
+    // Auxiliary data: only what the composition's implementations ask for.
+    BindContext context{node, volume, tf, node.settings, effectiveSampleDistance(node), ss, program->textureUnits,
+                        {}, offer.lights, {}, "", -1, {}, program->writesDepth,
+                        [this](const Volume& v, bool nearest) { return volumeTexture(v, nearest); }};
+    if (program->needs(AuxData::VolumeTexture)) context.aux[AuxData::VolumeTexture] = volumeTexture(volume, false);
+    for (bool premultiplied : {false, true}) {
+        if (!program->needs(premultiplied ? AuxData::PremultipliedTable : AuxData::TransferFunctionTable)) continue;
+        TableGL& table = _tables[{&tf, premultiplied}];
+        if (!table.texture || table.modified != tf.modifiedCount()) {
+            table.transfer = &tf;
+            table.texture = makeTransferFunctionTexture(tf, premultiplied);
+            table.modified = tf.modifiedCount();
+        }
+        table.lastCull = _cullCount;
+        context.aux[premultiplied ? AuxData::PremultipliedTable : AuxData::TransferFunctionTable] = table.texture;
+    }
+    for (const Binding& b : program->bindings)
+        if (b.instance < 0) context.chosen[b.function->slot] = b.function->name;
+
+    // Template instances, in the order chooseComposition made them: ClipRay's are the planes;
+    // ClipPosition's are the planes clipped per sample (when rays are not clipped) and the shapes.
+    std::size_t rayCount = 0, positionCount = 0;
+    for (const Binding& b : program->bindings) {
+        rayCount += b.function->slot == "ClipRay" && b.instance >= 0;
+        positionCount += b.function->slot == "ClipPosition" && b.instance >= 0;
+    }
+    const std::vector<ClipInfo> rayClips = rayCount ? offer.planes : std::vector<ClipInfo>();
+    std::vector<ClipInfo> positionClips;
+    if (positionCount == offer.planes.size() + offer.shapes.size() && rayCount == 0) positionClips = offer.planes;
+    if (positionCount) positionClips.insert(positionClips.end(), offer.shapes.begin(), offer.shapes.end());
+
+    for (const Binding& b : program->bindings) {
+        if (!b.function->bind) continue;
+        context.suffix = b.suffix;
+        context.instance = b.instance;
+        context.clips = b.function->slot == "ClipRay" ? rayClips : positionClips;
+        b.function->bind(context);
+    }
     return proxy;
 }
 
@@ -182,16 +378,19 @@ void VolumeScene::traverse(osg::NodeVisitor& nv)
     auto* cv = nv.asCullVisitor();
     if (!cv) return;
 
-    VolumeCollector collector(nv.getTraversalMask());
+    SceneCollector collector(nv.getTraversalMask());
     for (unsigned int i = 0; i < getNumChildren(); ++i) getChild(i)->accept(collector);
+    if (collector.lights.size() > maxLights && lighting)
+        OSG_WARN << "volren: " << collector.lights.size() << " lights; volumes use the first " << maxLights << std::endl;
+    const osg::Matrix sceneModelView = *cv->getModelViewMatrix();
 
     std::lock_guard<std::mutex> lock(_mutex);
     ++_cullCount;
     std::set<std::string> keys;
-    for (auto& [node, matrix] : collector.found) {
+    for (auto& [node, matrix] : collector.volumes) {
         Proxy* proxy = nullptr;
         try {
-            proxy = &updateProxy(*node);
+            proxy = &updateProxy(*node, offerFor(*node, matrix, collector, sceneModelView));
         } catch (const std::exception& e) {
             OSG_WARN << "volren: cannot draw volume '" << node->getName() << "': " << e.what() << std::endl;
             continue;
@@ -203,21 +402,12 @@ void VolumeScene::traverse(osg::NodeVisitor& nv)
     }
     _lastKeys.assign(keys.begin(), keys.end());
 
-    // Forget nodes that have left the scene, and GL data nobody uses any more.
-    std::set<const Volume*> usedVolumes;
-    std::set<const TransferFunction*> usedTransfers;
-    for (auto it = _proxies.begin(); it != _proxies.end();) {
-        if (_cullCount - it->second.lastCull > 2) it = _proxies.erase(it);
-        else {
-            usedVolumes.insert(it->first->getVolume());
-            usedTransfers.insert(it->first->getTransferFunction());
-            ++it;
-        }
-    }
+    // Forget nodes that have left the scene, and GL data no composition used lately.
+    auto stale = [this](unsigned int last) { return _cullCount - last > 2; };
+    for (auto it = _proxies.begin(); it != _proxies.end();) it = stale(it->second.lastCull) ? _proxies.erase(it) : std::next(it);
     for (auto it = _volumeTextures.begin(); it != _volumeTextures.end();)
-        it = usedVolumes.count(it->first) ? std::next(it) : _volumeTextures.erase(it);
-    for (auto it = _transferTextures.begin(); it != _transferTextures.end();)
-        it = usedTransfers.count(it->first) ? std::next(it) : _transferTextures.erase(it);
+        it = stale(it->second.lastCull) ? _volumeTextures.erase(it) : std::next(it);
+    for (auto it = _tables.begin(); it != _tables.end();) it = stale(it->second.lastCull) ? _tables.erase(it) : std::next(it);
 }
 
 void VolumeScene::checkPrograms(osg::State& state) const

@@ -50,9 +50,11 @@ osg::ref_ptr<osg::Texture3D> makeVolumeTexture(const Volume& volume)
     return texture;
 }
 
-osg::ref_ptr<osg::Texture1D> makeTransferFunctionTexture(const TransferFunction& tf)
+osg::ref_ptr<osg::Texture1D> makeTransferFunctionTexture(const TransferFunction& tf, bool premultiplied)
 {
-    const std::vector<osg::Vec4> table = tf.lookupTable();
+    std::vector<osg::Vec4> table = tf.lookupTable();
+    if (premultiplied)
+        for (osg::Vec4& c : table) c = osg::Vec4(c.r() * c.a(), c.g() * c.a(), c.b() * c.a(), c.a());
     osg::ref_ptr<osg::Image> image = new osg::Image;
     image->allocateImage(int(table.size()), 1, 1, GL_RGBA, GL_FLOAT);
     image->setInternalTextureFormat(GL_RGBA32F_ARB);

@@ -1,10 +1,15 @@
 #pragma once
+#include <limits>
+#include <map>
+#include <set>
 #include <string>
 #include <vector>
 
 namespace volren {
 
 /// Per-node render settings: plain data, compared by value by the renderer each frame.
+/// Implementation choices are by slot name (see shaders/slots.glsl); the renderer validates
+/// names against its registry and fills unset slots from the scene.
 struct RenderSettings
 {
     /// Step between samples as a factor of the volume's smallest voxel spacing.
@@ -13,8 +18,27 @@ struct RenderSettings
     double sampleDistance = 0.0;
     /// Front-to-back marching stops once accumulated opacity reaches this (1 = never early).
     double earlyTerminationThreshold = 0.95;
-    /// Offsets each ray's first sample by a per-pixel hash to break up wood-grain artefacts.
-    bool jitter = true;
+    /// Data value of the isosurface (isosurface traversal); NaN = the TF's first opaque value.
+    double isoValue = std::numeric_limits<double>::quiet_NaN();
+    /// Samples below this classified opacity are not lit (lighting_threshold shading).
+    double shadingThreshold = 0.05;
+    /// Ambient light, as a fraction of the classified colour.
+    double ambient = 0.2;
+    /// Specular strength and Blinn-Phong exponent.
+    double specular = 0.3, shininess = 24.0;
+    /// Cook-Torrance surface roughness (0..1].
+    double roughness = 0.35;
+    /// Threshold of threshold classification, 0..1 of the value window.
+    double threshold = 0.5;
+    /// What debug shading shows: 0 scalar, 1 position, 2 classification, 3 gradient, 4 normal,
+    /// 5 view direction, 6 light direction.
+    int debugView = 4;
+
+    /// Slot -> implementation chosen by the user ("RayTraversal" -> "mip"); unset slots are
+    /// chosen by the scene analysis.
+    std::map<std::string, std::string> functions;
+    /// Slots forced to their null implementation (for testing equivalences and costs).
+    std::set<std::string> forceNull;
 
     bool operator==(const RenderSettings& o) const;
     bool operator!=(const RenderSettings& o) const { return !(*this == o); }
@@ -22,8 +46,12 @@ struct RenderSettings
     /// Sets one setting by name (the keys of `volren render --set KEY=VALUE`).
     /// Returns false and fills `error` for an unknown key or a value out of range.
     bool set(const std::string& key, const std::string& value, std::string& error);
-    /// Names accepted by set().
-    static std::vector<std::string> keys();
+    /// Names accepted by set(), each with a one-line description.
+    static std::vector<std::pair<std::string, std::string>> keys();
+    /// Current value of `key` as text ("" when the scene decides).
+    std::string get(const std::string& key) const;
+    /// Slot chosen by a key ("traversal" -> "RayTraversal"), or "" when the key is not a slot key.
+    static std::string slotForKey(const std::string& key);
 };
 
 }  // namespace volren

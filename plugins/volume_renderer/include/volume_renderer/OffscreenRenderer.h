@@ -6,6 +6,8 @@
 #include <osgViewer/Viewer>
 
 #include <memory>
+#include <string>
+#include <vector>
 
 namespace volren {
 
@@ -16,6 +18,9 @@ struct FrameTiming
     double cpuMs = 0.0;    ///< wall-clock milliseconds of viewer.frame() (cull, draw, read-back)
     double drawMs = -1.0;  ///< wall-clock milliseconds from the camera's first draw call to glFinish
     double gpuMs = -1.0;   ///< GL_TIME_ELAPSED of the camera's draw; negative when unavailable
+    /// GL errors raised during the frame, as the driver's debug messages. In core profiles the
+    /// one legacy call Debian's GL2-built OSG makes per frame is left out.
+    std::vector<std::string> glErrors;
 };
 
 /// Renders a scene with no display: a HeadlessContext drives an embedded osgViewer whose
@@ -40,7 +45,14 @@ public:
     FrameTiming renderFrame();
     /// Last frame: RGBA float, premultiplied over the background, row 0 at the bottom.
     const osg::Image* image() const { return _image.get(); }
+    /// Last frame's depth buffer (window depth 0..1, row 0 at the bottom); null unless
+    /// setReadDepth(true) was called before the frame.
+    const osg::Image* depthImage() const { return _readDepth ? _depth.get() : nullptr; }
+    /// Whether frames also read back the depth buffer (off by default: it costs a read-back).
+    void setReadDepth(bool read);
 
+    /// OSG's state of the headless context (current on this thread).
+    osg::State* state();
     /// Description of the GL context ("EGL surfaceless: OpenGL 4.5 ... / llvmpipe").
     const std::string& contextDescription() const { return _context->description(); }
     int width() const { return _width; }    ///< image width in pixels
@@ -48,12 +60,16 @@ public:
 
 private:
     struct GpuTimer;
+    struct ErrorLog;
     void useCoreProfileDefaults();
     std::unique_ptr<HeadlessContext> _context;
     osg::ref_ptr<osgViewer::Viewer> _viewer;
     osg::ref_ptr<VolumeScene> _scene;
     osg::ref_ptr<osg::Image> _image;
+    osg::ref_ptr<osg::Image> _depth;
+    bool _readDepth = false;
     osg::ref_ptr<GpuTimer> _timer;
+    std::unique_ptr<ErrorLog> _errors;
     int _width, _height;
     bool _checked = false;
 };

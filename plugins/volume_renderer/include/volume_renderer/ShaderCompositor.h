@@ -11,26 +11,41 @@
 
 namespace volren {
 
-/// The implementation chosen for each slot; slots not named use their default.
+/// What the scene asks of the ray caster: one implementation per ordinary slot, a list of
+/// instances per template slot, and the number of lights.
 struct Composition
 {
-    std::map<std::string, std::string> choice;  ///< slot -> implementation name
+    std::map<std::string, std::string> choice;                  ///< slot -> implementation
+    std::map<std::string, std::vector<std::string>> instances;  ///< template slot -> one per shape
+    unsigned int lightCount = 0;                                ///< lights the shading loops over
 
-    /// Full key "Slot=impl;..." over every slot (defaults filled in); compared in full.
+    /// Full key "Slot=impl;...;ClipPosition=[box,plane];lights=N;" over every slot, defaults
+    /// filled in; programs are cached by the whole key.
     std::string key() const;
-    /// Implementation for `slot` (the default when not chosen).
+    /// Implementation for ordinary `slot` (its default when not chosen).
     std::string functionFor(const std::string& slot) const;
 };
 
-/// A linked-ready program for one composition, with what binding needs.
+/// One implementation bound into a program: which one, and its template instance suffix.
+struct Binding
+{
+    const ShaderFunction* function = nullptr;
+    std::string suffix;  ///< "_k" for template instance k, else ""
+    int instance = -1;   ///< k, or -1 for ordinary slots
+};
+
+/// A program for one composition, with what binding needs.
 struct ComposedProgram
 {
-    std::string key;                                 ///< Composition::key()
-    osg::ref_ptr<osg::Program> program;              ///< vertex + composed fragment shader
-    std::vector<const ShaderFunction*> functions;    ///< one per slot, in slot order
-    std::map<std::string, int> textureUnits;         ///< sampler name -> texture unit
-    std::string fragmentSource;                      ///< the composed fragment source
-    std::vector<std::string> sourceNames;            ///< GLSL source-string number -> file
+    std::string key;                          ///< Composition::key()
+    osg::ref_ptr<osg::Program> program;       ///< vertex + composed fragment shader
+    std::vector<Binding> bindings;            ///< every implementation in emission order
+    std::map<std::string, int> textureUnits;  ///< sampler name -> texture unit
+    std::string fragmentSource;               ///< the composed fragment source
+    std::vector<std::string> sourceNames;     ///< GLSL source-string number -> file
+    bool writesDepth = false;                 ///< the traversal reports surface hits
+    /// Whether an implementation of this program needs `aux`.
+    bool needs(AuxData aux) const;
 };
 
 /// Assembles one GLSL program per composition from shader-function files and caches it.

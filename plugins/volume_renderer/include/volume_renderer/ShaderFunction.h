@@ -1,6 +1,8 @@
 #pragma once
+#include <osg/Matrixd>
 #include <osg/StateSet>
 #include <osg/Texture>
+#include <osg/Vec4d>
 
 #include <functional>
 #include <map>
@@ -9,6 +11,7 @@
 
 namespace volren {
 
+class ClipNode;
 class Volume;
 class VolumeNode;
 class TransferFunction;
@@ -17,8 +20,9 @@ struct RenderSettings;
 /// A uniform an implementation reads (the compositor declares it once in the program).
 struct UniformDecl
 {
-    std::string name;      ///< GLSL name, `volren_` prefixed
-    std::string glslType;  ///< "float", "vec2", "mat4", ...
+    std::string name;       ///< GLSL name, `volren_` prefixed
+    std::string glslType;   ///< "float", "vec2", "mat4", ...
+    std::string arraySize;  ///< GLSL array size expression, empty for a single value
 };
 
 /// A texture an implementation samples; the compositor gives each distinct name a unit.
@@ -29,7 +33,21 @@ struct TextureDecl
 };
 
 /// Auxiliary data an implementation needs; the renderer creates only what a composition asks for.
-enum class AuxData { VolumeTexture, TransferFunctionTable };
+enum class AuxData { VolumeTexture, TransferFunctionTable, PremultipliedTable, JitterTexture };
+
+/// A light as the volume sees it, in the VolumeNode's local coordinates.
+struct LightInfo
+{
+    osg::Vec4d position;  ///< w = 0: direction towards the light; w = 1: point light position
+    osg::Vec3d colour;    ///< diffuse colour of the osg::Light
+};
+
+/// A clip shape as the volume sees it.
+struct ClipInfo
+{
+    const ClipNode* node = nullptr;  ///< the shape
+    osg::Matrixd textureToShape;     ///< volume texture space -> the shape's local coordinates
+};
 
 /// What an implementation may read and set while binding one volume for a frame.
 struct BindContext
@@ -42,36 +60,71 @@ struct BindContext
     osg::StateSet& stateSet;             ///< per-node state of the volume's proxy geometry
     const std::map<std::string, int>& textureUnits;  ///< sampler name -> unit, from the compositor
     std::map<AuxData, osg::ref_ptr<osg::Texture>> aux;  ///< auxiliary textures made for this node
+    std::vector<LightInfo> lights;       ///< lights reaching the volume
+    std::vector<ClipInfo> clips;         ///< per template instance of the slot being bound
+    std::string suffix;                  ///< "_k" while binding template instance k, else ""
+    int instance = -1;                   ///< k while binding template instance k, else -1
+    std::map<std::string, std::string> chosen;  ///< slot -> implementation of this composition
+    bool writesDepth = false;            ///< the composition's traversal reports surface hits
+    /// Texture of a volume (shared per Volume); `nearest` selects nearest-voxel filtering.
+    std::function<osg::Texture*(const Volume&, bool nearest)> volumeTexture;
 
-    /// Sets uniform `name` to `value` on the node's state.
+    /// Name of `base` for the instance being bound (adds the template suffix).
+    std::string name(const std::string& base) const { return base + suffix; }
+    /// The clip shape of the template instance being bound.
+    const ClipInfo& clip() const;
+
+    /// Sets uniform `name` (template suffix added) to `value` on the node's state.
     template <typename T>
-    void uniform(const std::string& name, const T& value)
+    void uniform(const std::string& base, const T& value)
     {
-        osg::Uniform* u = stateSet.getUniform(name);
+        const std::string full = name(base);
+        osg::Uniform* u = stateSet.getUniform(full);
         if (!u) {
-            u = new osg::Uniform(name.c_str(), value);
+            u = new osg::Uniform(full.c_str(), value);
             stateSet.addUniform(u);
         } else {
             u->set(value);
         }
     }
-    /// Binds `texture` to sampler `name` (its unit comes from the compositor).
-    void texture(const std::string& name, osg::Texture* texture);
+    /// Sets element `index` of uniform array `base` (of `size` elements) to `value`.
+    template <typename T>
+    void uniformElement(const std::string& base, unsigned int size, unsigned int index, const T& value)
+    {
+        const std::string full = name(base);
+        osg::Uniform* u = stateSet.getUniform(full);
+        if (!u || u->getNumElements() != size) {
+            if (u) stateSet.removeUniform(u);
+            u = new osg::Uniform(osg::Uniform::getTypeId(glslTypeOf(value)), full, int(size));
+            stateSet.addUniform(u);
+        }
+        u->setElement(index, value);
+    }
+    /// Binds `texture` to sampler `base` (template suffix added; unit from the compositor).
+    void texture(const std::string& base, osg::Texture* texture);
+
+private:
+    static std::string glslTypeOf(float) { return "float"; }
+    static std::string glslTypeOf(const osg::Vec3f&) { return "vec3"; }
+    static std::string glslTypeOf(const osg::Vec4f&) { return "vec4"; }
 };
 
 /// One implementation of a shader-function slot: a GLSL file plus what it needs.
 /// The GLSL file states its slot and signature at the top and declares no uniforms itself:
-/// the compositor emits the declarations listed here, once per program.
+/// the compositor emits the declarations listed here, once per program (per instance for
+/// template slots, with the instance suffix).
 struct ShaderFunction
 {
     std::string slot;                   ///< slot name, e.g. "RayTraversal"
     std::string name;                   ///< implementation name, e.g. "dvr_front_to_back"
     std::string file;                   ///< fragment source, relative to a shader directory
     std::string vertexFile;             ///< vertex source (RaySetup only), relative path
+    std::vector<std::string> includes;  ///< helper files emitted (once) before `file`
     std::vector<UniformDecl> uniforms;  ///< uniforms it reads
     std::vector<TextureDecl> textures;  ///< samplers it reads
     std::vector<AuxData> needs;         ///< auxiliary data the renderer must create
     std::function<void(BindContext&)> bind;  ///< sets this frame's uniform values and textures
+    bool writesDepth = false;           ///< RayTraversal: reports a surface hit (isosurface)
 };
 
 }  // namespace volren

@@ -8,11 +8,24 @@
 namespace volren {
 
 /// Every known shader-function implementation, by slot and name.
+/// Besides the built-ins it takes, at first use of instance():
+/// - plugin libraries `volren_functions_*.so` in the folders of $VOLREN_FUNCTION_PATH
+///   (colon-separated), each exporting `extern "C" void volrenRegisterShaderFunctions(
+///   volren::ShaderFunctionRegistry&)`;
+/// - GLSL files `<Slot>/<name>.glsl` in the folders of $VOLREN_SHADER_PATH that name no
+///   registered implementation: they become implementations that bind nothing (they may
+///   declare their own uniforms and use any the composition declares).
 class ShaderFunctionRegistry
 {
 public:
-    /// The process-wide registry, filled with volren's built-in implementations.
+    /// The process-wide registry, filled with the built-ins and the run-time additions.
     static ShaderFunctionRegistry& instance();
+    /// Registers every built-in implementation.
+    void addBuiltins();
+    /// Loads plugin libraries from $VOLREN_FUNCTION_PATH; returns the messages of failures.
+    std::vector<std::string> loadPlugins();
+    /// Registers unclaimed GLSL files found in $VOLREN_SHADER_PATH; returns how many.
+    std::size_t addShaderDirectoryFunctions();
 
     /// Adds or replaces an implementation (plugins may add their own).
     void add(ShaderFunction function);
@@ -40,5 +53,9 @@ void registerClipPositionFunctions(ShaderFunctionRegistry& registry);
 void registerReconstructionFunctions(ShaderFunctionRegistry& registry);
 void registerClassificationFunctions(ShaderFunctionRegistry& registry);
 void registerShadingFunctions(ShaderFunctionRegistry& registry);
+void registerGradientFunctions(ShaderFunctionRegistry& registry);
+void registerIlluminationFunctions(ShaderFunctionRegistry& registry);
+void registerShadowingFunctions(ShaderFunctionRegistry& registry);
+void registerAccelerationFunctions(ShaderFunctionRegistry& registry);
 
 }  // namespace volren

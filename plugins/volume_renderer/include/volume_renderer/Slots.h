@@ -4,14 +4,25 @@
 
 namespace volren {
 
-/// A shader-function slot: its name and the implementation used when the scene asks for nothing.
+/// A shader-function slot. Signatures are declared in shaders/slots.glsl.
+/// Template slots hold N instances (N clip shapes): each instance's function and uniforms get
+/// the suffix _k, and the compositor writes the slot's function as a dispatcher over them.
 struct SlotInfo
 {
-    std::string name;            ///< e.g. "Classification"
-    std::string defaultFunction;  ///< e.g. "tf1d"
+    std::string name;             ///< e.g. "Classification"
+    std::string defaultFunction;  ///< implementation when the scene asks for nothing special
+    std::string function;         ///< GLSL function name, e.g. "volren_classify"
+    bool isTemplate = false;      ///< instantiated once per clip shape
+    std::string signature;        ///< full GLSL signature (template slots: used by the dispatcher)
+    std::string call;             ///< template slots: call of instance {k}
+    std::string join;             ///< template slots: text between calls
+    std::string wrap;             ///< template slots: body around the joined calls ({calls})
+    std::string empty;            ///< template slots: body when there are no instances
 };
 
-/// All slots, in the order their implementations are emitted. Signatures: shaders/slots.glsl.
+/// All slots, callees first (the order their implementations are emitted in).
 const std::vector<SlotInfo>& slots();
+/// The slot named `name`, or null.
+const SlotInfo* findSlot(const std::string& name);
 
 }  // namespace volren

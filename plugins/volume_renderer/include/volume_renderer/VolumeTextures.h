@@ -14,7 +14,8 @@ GLenum internalFormatFor(VoxelType type);
 /// the Volume's buffer, so keep the Volume alive as long as the texture.
 osg::ref_ptr<osg::Texture3D> makeVolumeTexture(const Volume& volume);
 
-/// RGBA32F 1D lookup table of the transfer function (resolution() texels).
-osg::ref_ptr<osg::Texture1D> makeTransferFunctionTexture(const TransferFunction& tf);
+/// RGBA32F 1D lookup table of the transfer function (resolution() texels); `premultiplied`
+/// stores associated colours (r*a, g*a, b*a, a).
+osg::ref_ptr<osg::Texture1D> makeTransferFunctionTexture(const TransferFunction& tf, bool premultiplied = false);
 
 }  // namespace volren

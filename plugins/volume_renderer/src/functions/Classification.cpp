@@ -1,32 +1,45 @@
 // Classification implementations.
+#include "CommonBindings.h"
+
 #include <volume_renderer/ShaderFunctionRegistry.h>
 
-#include <volume_model/TransferFunction.h>
-#include <volume_model/Volume.h>
+#include <volume_model/RenderSettings.h>
 
 namespace volren {
 
 void registerClassificationFunctions(ShaderFunctionRegistry& registry)
 {
-    ShaderFunction tf1d;
-    tf1d.slot = "Classification";
-    tf1d.name = "tf1d";
-    tf1d.file = "Classification/tf1d.glsl";
-    tf1d.textures = {{"volren_transferFunction", "sampler1D"}};
-    tf1d.uniforms = {{"volren_tfScaleOffset", "vec2"}};
-    tf1d.needs = {AuxData::TransferFunctionTable};
+    ShaderFunction none{"Classification", "null", "Classification/null.glsl", "", {}, bindings::window,
+                        {}, {}, [](BindContext& c) { bindings::bindWindow(c); }, false};
+    registry.add(none);
+
+    ShaderFunction tf1d{"Classification", "tf1d", "Classification/tf1d.glsl", "", {}, bindings::window,
+                        {{"volren_transferFunction", "sampler1D"}}, {AuxData::TransferFunctionTable}, nullptr, false};
     tf1d.bind = [](BindContext& c) {
-        // texel v -> stored v*norm -> data stored*slope+intercept -> window t -> table texel centre.
-        const double norm = normalisedScale(c.volume.type());
-        const double lo = c.transfer.domainMin(), hi = c.transfer.domainMax();
-        const double n = c.transfer.resolution();
-        const double inner = (n - 1.0) / n;
-        const double scale = norm * c.volume.rescaleSlope() / (hi - lo) * inner;
-        const double offset = (c.volume.rescaleIntercept() - lo) / (hi - lo) * inner + 0.5 / n;
-        c.uniform("volren_tfScaleOffset", osg::Vec2f(float(scale), float(offset)));
+        bindings::bindWindow(c);
         c.texture("volren_transferFunction", c.aux.at(AuxData::TransferFunctionTable).get());
     };
     registry.add(tf1d);
+
+    ShaderFunction premultiplied{"Classification", "premultiplied", "Classification/premultiplied.glsl", "", {},
+                                 bindings::window, {{"volren_premultipliedTable", "sampler1D"}},
+                                 {AuxData::PremultipliedTable}, nullptr, false};
+    premultiplied.bind = [](BindContext& c) {
+        bindings::bindWindow(c);
+        c.texture("volren_premultipliedTable", c.aux.at(AuxData::PremultipliedTable).get());
+    };
+    registry.add(premultiplied);
+
+    ShaderFunction threshold = tf1d;
+    threshold.name = "threshold";
+    threshold.file = "Classification/threshold.glsl";
+    threshold.uniforms.push_back({"volren_threshold", "float", ""});
+    threshold.bind = [](BindContext& c) {
+        bindings::bindWindow(c);
+        c.uniform("volren_threshold", float(c.settings.threshold));
+        c.texture("volren_transferFunction", c.aux.at(AuxData::TransferFunctionTable).get());
+    };
+    registry.add(threshold);
 }
 
 }  // namespace volren

@@ -1,7 +1,7 @@
 // RaySetup implementations: they own main() and the proxy geometry's vertex stage.
-#include <volume_renderer/ShaderFunctionRegistry.h>
+#include "CommonBindings.h"
 
-#include <volume_model/Volume.h>
+#include <volume_renderer/ShaderFunctionRegistry.h>
 
 namespace volren {
 
@@ -12,8 +12,18 @@ void registerRaySetupFunctions(ShaderFunctionRegistry& registry)
     box.name = "box_intersection";
     box.file = "RaySetup/box_intersection.glsl";
     box.vertexFile = "RaySetup/box_intersection.vert";
-    box.bind = [](BindContext& c) { c.uniform("volren_worldSize", osg::Vec3f(c.volume.worldSize())); };
+    box.uniforms = {{"volren_writesDepth", "bool", ""}};
+    box.bind = [](BindContext& c) {
+        bindings::bindGeometry(c);  // the vertex stage reads volren_worldSize
+        c.uniform("volren_writesDepth", c.writesDepth);
+    };
     registry.add(box);
+
+    ShaderFunction none = box;
+    none.name = "null";
+    none.file = "RaySetup/null.glsl";
+    none.uniforms.clear();
+    registry.add(none);
 }
 
 }  // namespace volren

@@ -1,18 +1,27 @@
 // Reconstruction (scalar fetch) implementations.
+#include "CommonBindings.h"
+
 #include <volume_renderer/ShaderFunctionRegistry.h>
 
 namespace volren {
 
 void registerReconstructionFunctions(ShaderFunctionRegistry& registry)
 {
-    ShaderFunction trilinear;
-    trilinear.slot = "Reconstruction";
-    trilinear.name = "trilinear";
-    trilinear.file = "Reconstruction/trilinear.glsl";
-    trilinear.textures = {{"volren_volume", "sampler3D"}};
-    trilinear.needs = {AuxData::VolumeTexture};
-    trilinear.bind = [](BindContext& c) { c.texture("volren_volume", c.aux.at(AuxData::VolumeTexture).get()); };
-    registry.add(trilinear);
+    registry.add({"Reconstruction", "null", "Reconstruction/null.glsl", "", {}, {}, {}, {}, nullptr, false});
+    for (const char* name : {"nearest", "trilinear", "tricubic"}) {
+        ShaderFunction f;
+        f.slot = "Reconstruction";
+        f.name = name;
+        f.file = std::string("Reconstruction/") + name + ".glsl";
+        f.uniforms = bindings::geometry;
+        f.textures = {bindings::volumeTexture};
+        f.needs = {AuxData::VolumeTexture};
+        f.bind = [](BindContext& c) {
+            bindings::bindGeometry(c);
+            bindings::bindVolumeTexture(c);
+        };
+        registry.add(f);
+    }
 }
 
 }  // namespace volren

@@ -1,0 +1,182 @@
+#include "CommandLine.h"
+#include "Commands.h"
+
+#include <volume_renderer/OffscreenRenderer.h>
+#include <volume_renderer/Permutations.h>
+
+#include <volume_model/ClipBoxNode.h>
+#include <volume_model/ClipPlaneNode.h>
+#include <volume_model/ParseNumber.h>
+
+#include <nlohmann/json.hpp>
+#include <osg/LightSource>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <iostream>
+
+namespace volren::app {
+
+namespace {
+
+/// A small scene that gives every slot something to do: a float volume (a soft ball), a TF,
+/// a light, a clip plane and a clip box.
+osg::ref_ptr<VolumeScene> sweepScene()
+{
+    osg::ref_ptr<Volume> volume = new Volume;
+    volume->allocate(VoxelType::Float32, {12, 10, 8});
+    auto* v = reinterpret_cast<float*>(volume->data());
+    for (int z = 0; z < 8; ++z)
+        for (int y = 0; y < 10; ++y)
+            for (int x = 0; x < 12; ++x) {
+                const double dx = (x - 5.5) / 6, dy = (y - 4.5) / 5, dz = (z - 3.5) / 4;
+                v[x + 12 * (y + 10 * z)] = float(std::max(0.0, 1.0 - std::sqrt(dx * dx + dy * dy + dz * dz)));
+            }
+    volume->dirty();
+    osg::ref_ptr<TransferFunction> tf = new TransferFunction;
+    tf->setPoint(0.0, osg::Vec4(0, 0, 0, 0));
+    tf->setPoint(1.0, osg::Vec4(1, 0.8f, 0.6f, 0.5f));
+    osg::ref_ptr<VolumeNode> node = new VolumeNode;
+    node->setName("sweep");
+    node->setVolume(volume.get());
+    node->setTransferFunction(tf.get());
+    osg::ref_ptr<VolumeScene> scene = new VolumeScene;
+    scene->addChild(node.get());
+    osg::ref_ptr<osg::LightSource> light = new osg::LightSource;
+    light->getLight()->setPosition(osg::Vec4(1, 1, 1, 0));
+    scene->addChild(light.get());
+    osg::ref_ptr<ClipPlaneNode> plane = new ClipPlaneNode;
+    plane->plane.set(1.0, 0.0, 0.0, 2.0);
+    scene->addChild(plane.get());
+    osg::ref_ptr<ClipBoxNode> box = new ClipBoxNode;
+    box->box.set(-5, -4, -3, 5, 4, 3);
+    scene->addChild(box.get());
+    return scene;
+}
+
+double median(std::vector<double> v)
+{
+    if (v.empty()) return 0.0;
+    std::sort(v.begin(), v.end());
+    return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+}
+
+}  // namespace
+
+int permutationsCommand(const std::vector<std::string>& args)
+{
+    bool list = false, compile = false, render = false, pairwise = false;
+    unsigned int maxInstances = 1, maxLights = 1;
+    std::size_t first = 0, count = std::size_t(-1), shard = 0, shards = 1;
+    std::string statsFile;
+    auto number = [&](std::size_t& i, const std::string& what) {
+        double v = 0;
+        if (i + 1 >= args.size() || !parseFiniteNumber(args[i + 1], v) || v < 0 || v != std::floor(v))
+            throw UsageError(what + " needs a whole number >= 0");
+        ++i;
+        return std::size_t(v);
+    };
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        if (args[i] == "--list") list = true;
+        else if (args[i] == "--compile") compile = true;
+        else if (args[i] == "--render") render = compile = true;
+        else if (args[i] == "--pairwise") pairwise = true;
+        else if (args[i] == "--max-instances") maxInstances = unsigned(number(i, "--max-instances"));
+        else if (args[i] == "--max-lights") maxLights = unsigned(number(i, "--max-lights"));
+        else if (args[i] == "--first") first = number(i, "--first");
+        else if (args[i] == "--count") count = number(i, "--count");
+        else if (args[i] == "--shard") {
+            const std::string spec = i + 1 < args.size() ? args[++i] : "";
+            const std::size_t slash = spec.find('/');
+            double a = 0, b = 0;
+            if (slash == std::string::npos || !parseFiniteNumber(spec.substr(0, slash), a) ||
+                !parseFiniteNumber(spec.substr(slash + 1), b) || b < 1 || a < 0 || a >= b || a != std::floor(a) ||
+                b != std::floor(b))
+                throw UsageError("--shard needs I/N with 0 <= I < N, got '" + spec + "'");
+            shard = std::size_t(a);
+            shards = std::size_t(b);
+        } else if (args[i] == "--stats") {
+            if (i + 1 >= args.size()) throw UsageError("--stats needs a file");
+            statsFile = args[++i];
+        } else throw UsageError("permutations: unknown option '" + args[i] + "'");
+    }
+    if (maxInstances > 3 || maxLights > 4) throw UsageError("--max-instances is at most 3 and --max-lights at most 4");
+
+    const PermutationSpace space(ShaderFunctionRegistry::instance(), maxInstances, maxLights);
+    std::vector<std::size_t> indices;
+    if (pairwise) indices = space.pairwiseCover();
+    else
+        for (std::size_t i = 0; i < space.size(); ++i) indices.push_back(i);
+    if (shards > 1) {  // every N-th, so each shard mixes all kinds of composition
+        std::vector<std::size_t> mine;
+        for (std::size_t i = shard; i < indices.size(); i += shards) mine.push_back(indices[i]);
+        indices.swap(mine);
+    }
+    const std::size_t end = std::min(indices.size(), count == std::size_t(-1) ? indices.size() : first + count);
+    std::cout << "volren permutations: " << space.size() << " valid compositions (instances <= " << maxInstances
+              << ", lights <= " << maxLights << ")" << (pairwise ? ", pairwise cover of " : ", selected ")
+              << indices.size() << "; this run: " << (end > first ? end - first : 0) << std::endl;
+    if (list)
+        for (std::size_t i = first; i < end; ++i) std::cout << space.at(indices[i]).key() << "\n";
+    if (!compile) return 0;
+
+    OffscreenRenderer renderer(8, 8);
+    osg::ref_ptr<VolumeScene> scene = sweepScene();
+    renderer.setScene(scene.get());
+    renderer.camera()->setViewMatrixAsLookAt(osg::Vec3d(20, -25, 15), osg::Vec3d(), osg::Vec3d(0, 0, 1));
+    renderer.camera()->setProjectionMatrixAsPerspective(40, 1, 1, 100);
+    ShaderCompositor compositor;
+    std::vector<double> compileMs;
+    std::size_t failures = 0;
+    nlohmann::json failed = nlohmann::json::array();
+    for (std::size_t i = first; i < end; ++i) {
+        const Composition composition = space.at(indices[i]);
+        std::string problem;
+        try {
+            if (render) {
+                scene->forcedComposition = composition;
+                const auto start = std::chrono::steady_clock::now();
+                renderer.renderFrame();  // composes, compiles, links and draws (llvmpipe compiles at draw)
+                compileMs.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+                const auto* px = reinterpret_cast<const float*>(renderer.image()->data());
+                for (int k = 0; k < 8 * 8 * 4; ++k)
+                    if (!std::isfinite(px[k])) problem = "NaN or Inf pixel";
+            } else {
+                auto program = compositor.program(composition);
+                const auto start = std::chrono::steady_clock::now();
+                program->program->compileGLObjects(*renderer.state());
+                osg::Program::PerContextProgram* pcp = program->program->getPCP(*renderer.state());
+                compileMs.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+                if (!pcp || !pcp->isLinked()) {
+                    std::string log;
+                    program->program->getGlProgramInfoLog(renderer.state()->getContextID(), log);
+                    problem = "link failed: " + ShaderCompositor::explainLog(log, *program);
+                }
+                program->program->releaseGLObjects(renderer.state());
+            }
+        } catch (const std::exception& e) {
+            problem = e.what();
+        }
+        if (!problem.empty()) {
+            ++failures;
+            failed.push_back({{"key", composition.key()}, {"error", problem}});
+            std::cout << "FAILED " << composition.key() << "\n  " << problem << std::endl;
+        }
+        if ((i - first + 1) % 500 == 0) std::cout << "  " << (i - first + 1) << " done" << std::endl;
+    }
+    std::cout << (render ? "rendered " : "compiled ") << compileMs.size() << ", failures " << failures
+              << ", median " << (render ? "frame incl. compile" : "compile+link") << " " << median(compileMs) << " ms"
+              << std::endl;
+    if (!statsFile.empty()) {
+        nlohmann::json stats = {{"valid_compositions", space.size()}, {"tested", compileMs.size()},
+                                {"failures", failures}, {"failed", failed}, {"median_ms", median(compileMs)},
+                                {"mode", render ? "render" : "compile"}, {"pairwise", pairwise},
+                                {"max_instances", maxInstances}, {"max_lights", maxLights}};
+        std::ofstream(statsFile) << stats.dump(2) << "\n";
+    }
+    return failures == 0 ? 0 : 1;
+}
+
+}  // namespace volren::app

@@ -1,0 +1,77 @@
+#include "CommonBindings.h"
+
+#include <volume_model/TransferFunction.h>
+#include <volume_model/Volume.h>
+#include <volume_model/VolumeNode.h>
+
+namespace volren::bindings {
+
+const std::vector<UniformDecl> geometry = {{"volren_worldSize", "vec3", ""}, {"volren_dims", "vec3", ""}};
+
+void bindGeometry(BindContext& c)
+{
+    const osg::Vec3i& d = c.volume.dims();
+    c.uniform("volren_worldSize", osg::Vec3f(c.volume.worldSize()));
+    c.uniform("volren_dims", osg::Vec3f(float(d.x()), float(d.y()), float(d.z())));
+}
+
+const std::vector<UniformDecl> window = {{"volren_window", "vec2", ""}, {"volren_tfResolution", "float", ""}};
+
+std::pair<double, double> windowOf(const BindContext& c)
+{
+    return {c.transfer.domainMin(), c.transfer.domainMax()};
+}
+
+void bindWindow(BindContext& c)
+{
+    // texel v -> stored v*norm -> data stored*slope + intercept -> window (data - lo)/(hi - lo).
+    const double norm = normalisedScale(c.volume.type());
+    const auto [lo, hi] = windowOf(c);
+    const double scale = norm * c.volume.rescaleSlope() / (hi - lo);
+    const double offset = (c.volume.rescaleIntercept() - lo) / (hi - lo);
+    c.uniform("volren_window", osg::Vec2f(float(scale), float(offset)));
+    c.uniform("volren_tfResolution", float(c.transfer.resolution()));
+}
+
+const TextureDecl volumeTexture = {"volren_volume", "sampler3D"};
+
+void bindVolumeTexture(BindContext& c)
+{
+    c.texture("volren_volume", c.aux.at(AuxData::VolumeTexture).get());
+}
+
+const std::vector<UniformDecl> lights = {{"volren_lightPosition", "vec4", "VOLREN_LIGHT_ARRAY"},
+                                         {"volren_lightColour", "vec3", "VOLREN_LIGHT_ARRAY"},
+                                         {"volren_ambient", "float", ""}};
+
+void bindLights(BindContext& c)
+{
+    const unsigned int size = std::max<unsigned int>(1, unsigned(c.lights.size()));
+    for (unsigned int i = 0; i < size; ++i) {
+        const LightInfo light = i < c.lights.size() ? c.lights[i] : LightInfo{};
+        c.uniformElement("volren_lightPosition", size, i, osg::Vec4f(light.position));
+        c.uniformElement("volren_lightColour", size, i, osg::Vec3f(light.colour));
+    }
+    c.uniform("volren_ambient", float(c.settings.ambient));
+}
+
+const UniformDecl gradientScale = {"volren_gradientScale", "float", ""};
+
+void bindGradientScale(BindContext& c)
+{
+    double range = 1.0;  // classified alpha spans [0,1]
+    auto input = c.chosen.find("GradientInput");
+    if (input == c.chosen.end() || input->second != "alpha") {
+        const auto [lo, hi] = windowOf(c);
+        range = (hi - lo) / (c.volume.rescaleSlope() * normalisedScale(c.volume.type()));  // in texel units
+    }
+    c.uniform("volren_gradientScale", float(std::abs(range) / c.volume.minSpacing()));
+}
+
+std::vector<UniformDecl> operator+(std::vector<UniformDecl> a, const std::vector<UniformDecl>& b)
+{
+    a.insert(a.end(), b.begin(), b.end());
+    return a;
+}
+
+}  // namespace volren::bindings

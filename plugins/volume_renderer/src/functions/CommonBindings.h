@@ -1,0 +1,35 @@
+#pragma once
+// Uniforms several implementations share: declared by each that reads them (the compositor
+// declares a name once) and set by these helpers, so their values have one definition.
+#include <volume_renderer/ShaderFunction.h>
+
+namespace volren::bindings {
+
+/// volren_worldSize (vec3) and volren_dims (vec3).
+extern const std::vector<UniformDecl> geometry;
+void bindGeometry(BindContext& c);
+
+/// volren_window (vec2: texel value -> TF window [0,1]) and volren_tfResolution (float).
+extern const std::vector<UniformDecl> window;
+void bindWindow(BindContext& c);
+
+/// The volume texture as volren_volume (sampler3D).
+extern const TextureDecl volumeTexture;
+void bindVolumeTexture(BindContext& c);
+
+/// Scene lights: volren_lightPosition, volren_lightColour (arrays) and volren_ambient.
+extern const std::vector<UniformDecl> lights;
+void bindLights(BindContext& c);
+
+/// volren_gradientScale: gradient magnitude of a jump across the whole TF window within one
+/// smallest voxel spacing, in the units of the chosen GradientInput.
+extern const UniformDecl gradientScale;
+void bindGradientScale(BindContext& c);
+
+/// The transfer function's value window in data units: [lo, hi].
+std::pair<double, double> windowOf(const BindContext& c);
+
+/// Concatenation helper for uniform lists.
+std::vector<UniformDecl> operator+(std::vector<UniformDecl> a, const std::vector<UniformDecl>& b);
+
+}  // namespace volren::bindings

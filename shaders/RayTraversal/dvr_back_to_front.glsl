@@ -1,0 +1,32 @@
+// RayTraversal/dvr_back_to_front: the same segments and samples as front-to-back, composited
+// from the far end (colour = c_i * a_i + (1 - a_i) * colour); no early termination possible.
+// vec4 volren_traverse(vec3 origin, vec3 dir, float tNear, float tFar, float jitter, out float tHit)
+vec4 volren_traverse(vec3 origin, vec3 dir, float tNear, float tFar, float jitter, out float tHit)
+{
+    tHit = -1.0;
+    VolrenMarch m;
+    if (!volren_beginMarch(dir, tNear, tFar, jitter, m)) return vec4(0.0);
+    vec3 viewDir = -normalize(dir * volren_worldSize);
+
+    precise float depth = 0.0;
+    precise float compensation = 0.0;
+    vec3 color = vec3(0.0);
+    for (int i = m.count - 1; i >= 0; --i) {
+        float segStart = volren_segmentStart(m, i, tNear, tFar);
+        float segEnd = volren_segmentEnd(m, i, tFar);
+        float lenT = segEnd - segStart;
+        if (!(lenT > 0.0)) continue;
+        vec3 p = origin + dir * (0.5 * (segStart + segEnd));
+        if (volren_clipPosition(p)) continue;
+        vec4 c = volren_classify(volren_fetchScalar(p));
+        float dTau = volren_opticalDepth(c.a, lenT * m.worldPerT / volren_referenceStep);
+        if (!(dTau > 0.0)) continue;
+        float a = volren_opacityFromDepth(dTau);
+        color = a * volren_shade(p, viewDir, c) + (1.0 - a) * color;
+        precise float y = dTau - compensation;
+        precise float t = depth + y;
+        compensation = (t - depth) - y;
+        depth = t;
+    }
+    return vec4(color, volren_opacityFromDepth(depth));
+}

@@ -1,0 +1,32 @@
+// RayTraversal/march.glsl (included by the marching traversals): segments of one sample
+// distance that tile [tNear, tFar] exactly, the first shortened by the jitter and the last
+// by the exit; each is sampled at its midpoint.
+struct VolrenMarch
+{
+    float worldPerT;  // world length of one unit of t
+    float stepT;      // sample distance in t
+    float firstEnd;   // end of the first segment
+    int count;        // number of segments
+};
+
+// Sets up the segments of [tNear, tFar]; false when the ray has no length.
+bool volren_beginMarch(vec3 dir, float tNear, float tFar, float jitter, out VolrenMarch m)
+{
+    m.worldPerT = length(dir * volren_worldSize);
+    m.stepT = volren_sampleDistance / max(m.worldPerT, 1e-30);
+    m.firstEnd = tNear + (1.0 - jitter) * m.stepT;
+    m.count = int(ceil(max(tFar - m.firstEnd, 0.0) / m.stepT)) + 1;
+    return m.worldPerT > 0.0;
+}
+
+// End of segment i; the last one ends exactly at tFar.
+float volren_segmentEnd(VolrenMarch m, int i, float tFar)
+{
+    return i == m.count - 1 ? tFar : min(m.firstEnd + float(i) * m.stepT, tFar);
+}
+
+// Start of segment i.
+float volren_segmentStart(VolrenMarch m, int i, float tNear, float tFar)
+{
+    return i == 0 ? tNear : volren_segmentEnd(m, i - 1, tFar);
+}

@@ -1,0 +1,24 @@
+// RayTraversal/mip: MIP: the classified maximum of the reconstructed scalar along the ray (samples at the
+// segment midpoints of the DVR traversal; clipped samples are ignored), premultiplied.
+// vec4 volren_traverse(vec3 origin, vec3 dir, float tNear, float tFar, float jitter, out float tHit)
+vec4 volren_traverse(vec3 origin, vec3 dir, float tNear, float tFar, float jitter, out float tHit)
+{
+    tHit = -1.0;
+    VolrenMarch m;
+    if (!volren_beginMarch(dir, tNear, tFar, jitter, m)) return vec4(0.0);
+    float best = -3.4e38;
+    bool found = false;
+    for (int i = 0; i < m.count; ++i) {
+        float segStart = volren_segmentStart(m, i, tNear, tFar);
+        float segEnd = volren_segmentEnd(m, i, tFar);
+        vec3 p = origin + dir * (0.5 * (segStart + segEnd));
+        if (segEnd > segStart && !volren_clipPosition(p)) {
+            float s = volren_fetchScalar(p);
+            if (s > best) best = s;  // NaN compares false and is skipped
+            found = found || !isnan(s);
+        }
+    }
+    if (!found) return vec4(0.0);
+    vec4 c = volren_classify(best);
+    return vec4(c.rgb * c.a, c.a);
+}

@@ -1,0 +1,91 @@
+// The permutation space: validity rules, counting, and the pairwise covering subset.
+#include <volume_renderer/Permutations.h>
+#include <volume_renderer/Slots.h>
+
+#include <gtest/gtest.h>
+
+#include <map>
+#include <set>
+
+namespace volren::test {
+namespace {
+
+std::map<std::string, std::string> factors(const Composition& c)
+{
+    std::map<std::string, std::string> f;
+    const std::string key = c.key();
+    std::size_t start = 0;
+    while (start < key.size()) {
+        const std::size_t eq = key.find('=', start), end = key.find(';', start);
+        f[key.substr(start, eq - start)] = key.substr(eq + 1, end - eq - 1);
+        start = end + 1;
+    }
+    return f;
+}
+
+TEST(Permutations, EveryCompositionIsValidAndDistinct)
+{
+    const PermutationSpace space(ShaderFunctionRegistry::instance(), 1, 1);
+    EXPECT_GT(space.size(), 1000u);
+    std::set<std::string> keys;
+    for (std::size_t i = 0; i < space.size(); i += 97) {
+        const Composition c = space.at(i);
+        EXPECT_TRUE(PermutationSpace::isValid(c)) << c.key();
+        keys.insert(c.key());
+    }
+    EXPECT_EQ(keys.size(), (space.size() + 96) / 97);
+}
+
+TEST(Permutations, ValidityRulesRejectContradictions)
+{
+    Composition lit;
+    lit.choice = {{"Shading", "lighting"}, {"Illumination", "lambert"}, {"Gradient", "central"},
+                  {"GradientInput", "scalar"}};
+    lit.lightCount = 1;
+    EXPECT_TRUE(PermutationSpace::isValid(lit));
+    Composition noLight = lit;
+    noLight.lightCount = 0;
+    EXPECT_FALSE(PermutationSpace::isValid(noLight));
+    Composition halfGradient = lit;
+    halfGradient.choice["GradientInput"] = "null";
+    EXPECT_FALSE(PermutationSpace::isValid(halfGradient));
+    Composition mipLit = lit;
+    mipLit.choice["RayTraversal"] = "mip";
+    EXPECT_FALSE(PermutationSpace::isValid(mipLit));
+    Composition gmip;
+    gmip.choice = {{"RayTraversal", "gmip"}, {"Gradient", "central9"}, {"GradientInput", "alpha"}};
+    EXPECT_TRUE(PermutationSpace::isValid(gmip));
+    gmip.choice["Gradient"] = "null";
+    gmip.choice["GradientInput"] = "null";
+    EXPECT_FALSE(PermutationSpace::isValid(gmip));
+}
+
+TEST(Permutations, PairwiseCoverContainsEveryPairOfTheSpace)
+{
+    const PermutationSpace space(ShaderFunctionRegistry::instance(), 1, 1);
+    const std::vector<std::size_t> cover = space.pairwiseCover();
+    EXPECT_LT(cover.size(), 200u);
+    std::set<std::string> coveredPairs, allPairs;
+    auto pairsOf = [](const Composition& c, std::set<std::string>& out) {
+        const auto f = factors(c);
+        for (auto a = f.begin(); a != f.end(); ++a)
+            for (auto b = std::next(a); b != f.end(); ++b) out.insert(a->first + "=" + a->second + "|" + b->first + "=" + b->second);
+    };
+    for (std::size_t i : cover) pairsOf(space.at(i), coveredPairs);
+    for (std::size_t i = 0; i < space.size(); ++i) pairsOf(space.at(i), allPairs);
+    std::size_t missing = 0;
+    for (const std::string& p : allPairs) missing += !coveredPairs.count(p);
+    EXPECT_EQ(missing, 0u) << "of " << allPairs.size() << " pairs";
+    // Every implementation of every slot appears in the cover.
+    for (const SlotInfo& s : slots()) {
+        if (s.isTemplate) continue;
+        for (const std::string& name : ShaderFunctionRegistry::instance().names(s.name)) {
+            bool seen = false;
+            for (std::size_t i : cover) seen = seen || space.at(i).functionFor(s.name) == name;
+            EXPECT_TRUE(seen) << s.name << "/" << name;
+        }
+    }
+}
+
+}  // namespace
+}  // namespace volren::test
