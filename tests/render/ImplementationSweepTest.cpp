@@ -60,8 +60,10 @@ Composition compositionWith(const Implementation& impl)
         c.choice["GradientInput"] = "null";
     }
     if (c.functionFor("RaySetup") == "null" || traversal == "null") {
-        Composition bare;
-        bare.choice[impl.slot] = impl.name;
+        Composition bare;  // nothing marches: every other slot null
+        for (const SlotInfo& s : slots())
+            if (!s.isTemplate) bare.choice[s.name] = "null";
+        bare.choice["RaySetup"] = c.functionFor("RaySetup");
         return bare;
     }
     return c;

@@ -52,13 +52,13 @@ bool PermutationSpace::isValid(const Composition& c)
     const std::string setup = c.functionFor("RaySetup"), traversal = c.functionFor("RayTraversal");
     const std::string shading = c.functionFor("Shading"), illumination = c.functionFor("Illumination");
     const std::string gradient = c.functionFor("Gradient"), input = c.functionFor("GradientInput");
-    const bool everythingDefault = [&] {
-        Composition d;
-        d.choice["RaySetup"] = setup;
-        d.choice["RayTraversal"] = traversal;
-        return c.key() == d.key();
-    }();
-    if (setup == "null" || traversal == "null") return everythingDefault && !(setup == "null" && traversal == "null");
+    if (setup == "null" || traversal == "null") {  // nothing marches: everything else null
+        Composition bare;
+        for (const SlotInfo& s : slots())
+            if (!s.isTemplate) bare.choice[s.name] = "null";
+        bare.choice["RaySetup"] = setup;
+        return c.key() == bare.key();
+    }
     if ((gradient == "null") != (input == "null")) return false;
     if (c.functionFor("Shadowing") != "null" || c.functionFor("Acceleration") != "null") return false;
     const bool lit = shading == "lighting" || shading == "lighting_threshold";

@@ -205,6 +205,14 @@ Composition VolumeScene::chooseComposition(const VolumeNode& node, const SceneOf
         return it == s.functions.end() ? fallback : it->second;
     };
     Composition c;
+    const std::string setup = chosen("RaySetup", "box_intersection");
+    if (setup == "null" || chosen("RayTraversal", "dvr_front_to_back") == "null") {
+        // Nothing is marched, so nothing else can run: every other slot is null.
+        for (const SlotInfo& slot : slots())
+            if (!slot.isTemplate) c.choice[slot.name] = "null";
+        c.choice["RaySetup"] = setup;
+        return c;
+    }
     const unsigned int lights = lighting ? unsigned(std::min<std::size_t>(offer.lights.size(), maxLights)) : 0;
     const std::string illumination = chosen("Illumination", lights > 0 ? "blinn_phong" : "null");
     const std::string shading = chosen("Shading", lights > 0 && illumination != "null" ? "lighting" : "null");

@@ -10,7 +10,8 @@ namespace volren {
 /// The space of valid compositions: the cross product of every slot's implementations, clip
 /// instances 0..maxInstances per template slot and 0..maxLights lights, minus the
 /// combinations the rules below call invalid (code that could never run or contradicts itself):
-/// - RaySetup null or RayTraversal null: one composition each, everything else default;
+/// - RaySetup null or RayTraversal null: nothing marches, so every other slot is null (two
+///   compositions: box setup with null traversal, and null setup);
 /// - Gradient null <=> GradientInput null; Shadowing and Acceleration only null (no others yet);
 /// - lighting shadings need a non-null Illumination and at least one light; null shading has
 ///   null Illumination and no lights; debug shading has null Illumination;
