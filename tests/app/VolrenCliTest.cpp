@@ -19,9 +19,9 @@ struct CliRun
     std::string output;  // stdout and stderr
 };
 
-CliRun volren(const std::string& args, const std::string& workingDirectory = ".")
+CliRun volren(const std::string& args, const std::string& workingDirectory = ".", const std::string& env = "")
 {
-    const std::string command = "cd '" + workingDirectory + "' && '" + std::string(VOLREN_BINARY_DIR) +
+    const std::string command = "cd '" + workingDirectory + "' && " + env + "'" + std::string(VOLREN_BINARY_DIR) +
                                 "/bin/volren' " + args + " 2>&1";
     CliRun run;
     FILE* pipe = popen(command.c_str(), "r");
@@ -126,6 +126,50 @@ TEST(VolrenCli, InfoPrintsGeometryAndValues)
     EXPECT_NE(run.output.find("spacing:     0.7199"), std::string::npos) << run.output;
 }
 
+TEST(VolrenCli, ImplementationsComeFromPluginLibrariesAndShaderFoldersAtRunTime)
+{
+    const std::string env = std::string("VOLREN_FUNCTION_PATH='") + VOLREN_TEST_PLUGIN_DIR + "' VOLREN_SHADER_PATH='" +
+                            VOLREN_TEST_SHADER_DIR + "' ";
+    const std::string dir = tempDirectory();
+    CliRun run = volren("--help-settings");
+    EXPECT_EQ(run.output.find("plugin_constant"), std::string::npos) << "not there without the paths";
+    run = volren("--help-settings", ".", env);
+    EXPECT_NE(run.output.find("plugin_constant"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("directory_quarter"), std::string::npos) << run.output;
+
+    run = volren("shader --set jitter=plugin_constant", ".", env);
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    EXPECT_NE(run.output.find("uniform float volren_pluginJitter;"), std::string::npos);
+    EXPECT_NE(run.output.find("// ---- Jitter/plugin_constant.glsl ----"), std::string::npos);
+    EXPECT_NE(run.output.find("Jitter=plugin_constant;"), std::string::npos);
+
+    run = volren("render -o '" + dir + "/q.png' --size 32x32 --set jitter=directory_quarter", ".", env);
+    EXPECT_EQ(run.exitCode, 0) << run.output;
+    run = volren("render -o '" + dir + "/q.png' --size 32x32 --set jitter=directory_quarter");
+    EXPECT_EQ(run.exitCode, 2) << "unknown without the folder";
+    EXPECT_NE(run.output.find("slot Jitter has no implementation 'directory_quarter'"), std::string::npos) << run.output;
+}
+
+TEST(VolrenCli, ShaderPrintsTheComposedSourceWithItsFiles)
+{
+    const CliRun run = volren("shader --set traversal=mip --set reconstruction=tricubic");
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    EXPECT_NE(run.output.find("// ===== key: Reconstruction=tricubic;"), std::string::npos) << run.output.substr(0, 400);
+    for (const char* file : {"// ---- RayTraversal/mip.glsl ----", "// ---- Reconstruction/tricubic.glsl ----",
+                             "// ---- slots.glsl ----", "// ---- RaySetup/box_intersection.glsl ----"})
+        EXPECT_NE(run.output.find(file), std::string::npos) << file;
+    EXPECT_EQ(run.output.find("Shading/lights.glsl"), std::string::npos) << "MIP does not shade";
+}
+
+TEST(VolrenCli, HelpSettingsListsEveryKeyAndImplementation)
+{
+    const CliRun run = volren("render --help-settings");
+    ASSERT_EQ(run.exitCode, 0);
+    for (const char* text : {"samplerate", "earlyTermination", "lighting", "traversal", "isoValue",
+                             "RayTraversal    (traversal): dvr_front_to_back", "cook_torrance", "central9", "tricubic"})
+        EXPECT_NE(run.output.find(text), std::string::npos) << text;
+}
+
 TEST(VolrenCli, BadArgumentsExitWithUsageErrors)
 {
     VOLREN_REQUIRE_SHARED_DATA();
@@ -139,6 +183,9 @@ TEST(VolrenCli, BadArgumentsExitWithUsageErrors)
                           Case{"render '" + volume + "' -o x.png --fov 30 --ortho 4", "exclude each other", 2},
                           Case{"render '" + volume + "' -o x.png --eye 1,2", "--eye: expected x,y,z", 2},
                           Case{"render '" + volume + "' -o x.png --set warp=9", "unknown setting 'warp'", 2},
+                          Case{"render '" + volume + "' -o x.png --set traversal=xray", "no implementation 'xray'", 2},
+                          Case{"render '" + volume + "' -o x.png --set lighting=dim", "lighting must be on or off", 2},
+                          Case{"render '" + volume + "' -o x.png --set samplerate=0", "samplerate must be", 2},
                           Case{"render '" + volume + "' -o x.png --frames -1", "--frames", 2},
                           Case{"render '" + volume + "' -o x.png --bogus", "unknown option '--bogus'", 2},
                           Case{"render " + dir + "/none.nii -o x.png", dir + "/none.nii: no such file", 1},

@@ -65,10 +65,13 @@ bool PermutationSpace::isValid(const Composition& c)
     if (lit && (illumination == "null" || c.lightCount == 0)) return false;
     if (shading == "null" && (illumination != "null" || c.lightCount != 0)) return false;
     if (shading == "debug" && illumination != "null") return false;
-    const bool projection = traversal == "mip" || traversal == "minip" || traversal == "average" || traversal == "gmip";
-    if (projection && (shading != "null" || illumination != "null" || c.lightCount != 0)) return false;
-    if (traversal == "gmip") return gradient != "null";
-    return gradient == "null" || shading != "null";
+    // What the traversal calls decides what may be non-null (ShaderFunction::calls).
+    const ShaderFunction* marcher = ShaderFunctionRegistry::instance().find("RayTraversal", traversal);
+    const bool shades = !marcher || marcher->mayCall("Shading");
+    const bool readsGradient = marcher && !marcher->calls.empty() && marcher->mayCall("Gradient");
+    if (!shades && (shading != "null" || illumination != "null" || c.lightCount != 0)) return false;
+    if (readsGradient && gradient == "null") return false;
+    return gradient == "null" || shading != "null" || readsGradient;
 }
 
 PermutationSpace::PermutationSpace(const ShaderFunctionRegistry& registry, unsigned int maxInstances,

@@ -213,11 +213,15 @@ Composition VolumeScene::chooseComposition(const VolumeNode& node, const SceneOf
         c.choice["RaySetup"] = setup;
         return c;
     }
-    const unsigned int lights = lighting ? unsigned(std::min<std::size_t>(offer.lights.size(), maxLights)) : 0;
-    const std::string illumination = chosen("Illumination", lights > 0 ? "blinn_phong" : "null");
-    const std::string shading = chosen("Shading", lights > 0 && illumination != "null" ? "lighting" : "null");
     const std::string traversal = chosen("RayTraversal", "dvr_front_to_back");
-    const bool needGradient = shading != "null" || traversal == "gmip";
+    const ShaderFunction* marcher = _compositor.registry().find("RayTraversal", traversal);
+    const bool shades = !marcher || marcher->mayCall("Shading");
+    const unsigned int lights =
+        lighting && shades ? unsigned(std::min<std::size_t>(offer.lights.size(), maxLights)) : 0;
+    const std::string illumination = shades ? chosen("Illumination", lights > 0 ? "blinn_phong" : "null") : "null";
+    const std::string shading =
+        shades ? chosen("Shading", lights > 0 && illumination != "null" ? "lighting" : "null") : "null";
+    const bool needGradient = shading != "null" || (marcher && !marcher->calls.empty() && marcher->mayCall("Gradient"));
     const std::string gradient = chosen("Gradient", needGradient ? "central" : "null");
     c.choice["Illumination"] = illumination;
     c.choice["Shading"] = shading;

@@ -15,8 +15,9 @@ namespace volren {
 /// - Gradient null <=> GradientInput null; Shadowing and Acceleration only null (no others yet);
 /// - lighting shadings need a non-null Illumination and at least one light; null shading has
 ///   null Illumination and no lights; debug shading has null Illumination;
-/// - MIP, MinIP and average never shade: null Shading/Illumination/Gradient, no lights;
-///   GMIP needs a Gradient and does not shade;
+/// - traversals that never call Shading (MIP, MinIP, average, GMIP: ShaderFunction::calls)
+///   have null Shading and Illumination and no lights; one that reads the Gradient (GMIP)
+///   needs a non-null one;
 /// - a Gradient is only valid where something reads it (shading other than null, or GMIP).
 class PermutationSpace
 {

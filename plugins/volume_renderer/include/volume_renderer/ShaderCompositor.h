@@ -63,6 +63,8 @@ public:
 
     /// Number of programs built so far (one per distinct composition).
     std::size_t programCount() const;
+    /// The registry implementations come from.
+    const ShaderFunctionRegistry& registry() const { return _registry; }
 
 private:
     std::shared_ptr<const ComposedProgram> build(const Composition& composition) const;

@@ -4,6 +4,7 @@
 #include <osg/Texture>
 #include <osg/Vec4d>
 
+#include <algorithm>
 #include <functional>
 #include <map>
 #include <string>
@@ -125,6 +126,25 @@ struct ShaderFunction
     std::vector<AuxData> needs;         ///< auxiliary data the renderer must create
     std::function<void(BindContext&)> bind;  ///< sets this frame's uniform values and textures
     bool writesDepth = false;           ///< RayTraversal: reports a surface hit (isosurface)
+    /// Slots this implementation calls; empty = any. The scene analysis makes slots that no
+    /// chosen implementation calls null, so they cost nothing.
+    std::vector<std::string> calls = {};
+
+    /// An implementation of `slot` in `<slot>/<name>.glsl` that binds and needs nothing.
+    static ShaderFunction plain(const std::string& slot, const std::string& name)
+    {
+        ShaderFunction f;
+        f.slot = slot;
+        f.name = name;
+        f.file = slot + "/" + name + ".glsl";
+        return f;
+    }
+
+    /// Whether this implementation may call `slot`.
+    bool mayCall(const std::string& slot) const
+    {
+        return calls.empty() || std::find(calls.begin(), calls.end(), slot) != calls.end();
+    }
 };
 
 }  // namespace volren

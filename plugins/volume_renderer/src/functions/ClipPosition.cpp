@@ -17,7 +17,7 @@ const UniformDecl invert = {"volren_clipInvert", "bool", ""};
 
 void registerClipPositionFunctions(ShaderFunctionRegistry& registry)
 {
-    registry.add({"ClipPosition", "null", "ClipPosition/null.glsl", "", {}, {}, {}, {}, nullptr, false});
+    registry.add(ShaderFunction::plain("ClipPosition", "null"));
 
     ShaderFunction box{"ClipPosition", "box", "ClipPosition/box.glsl", "", {},
                        {matrix, invert, {"volren_clipBoxMin", "vec3", ""}, {"volren_clipBoxMax", "vec3", ""}},

@@ -7,7 +7,7 @@ namespace volren {
 
 void registerClipRayFunctions(ShaderFunctionRegistry& registry)
 {
-    registry.add({"ClipRay", "null", "ClipRay/null.glsl", "", {}, {}, {}, {}, nullptr, false});
+    registry.add(ShaderFunction::plain("ClipRay", "null"));
 
     ShaderFunction plane;
     plane.slot = "ClipRay";

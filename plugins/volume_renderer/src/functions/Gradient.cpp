@@ -7,7 +7,7 @@ namespace volren {
 
 void registerGradientFunctions(ShaderFunctionRegistry& registry)
 {
-    registry.add({"Gradient", "null", "Gradient/null.glsl", "", {}, {}, {}, {}, nullptr, false});
+    registry.add(ShaderFunction::plain("Gradient", "null"));
     for (const char* name : {"forward", "backward", "central", "central9"})
         registry.add({"Gradient", name, std::string("Gradient/") + name + ".glsl", "", {}, bindings::geometry, {}, {},
                       [](BindContext& c) { bindings::bindGeometry(c); }, false});

@@ -7,8 +7,8 @@ namespace volren {
 
 void registerIlluminationFunctions(ShaderFunctionRegistry& registry)
 {
-    registry.add({"Illumination", "null", "Illumination/null.glsl", "", {}, {}, {}, {}, nullptr, false});
-    registry.add({"Illumination", "lambert", "Illumination/lambert.glsl", "", {}, {}, {}, {}, nullptr, false});
+    registry.add(ShaderFunction::plain("Illumination", "null"));
+    registry.add(ShaderFunction::plain("Illumination", "lambert"));
     registry.add({"Illumination", "blinn_phong", "Illumination/blinn_phong.glsl", "", {},
                   {{"volren_specular", "float", ""}, {"volren_shininess", "float", ""}}, {}, {},
                   [](BindContext& c) {
@@ -27,12 +27,12 @@ void registerIlluminationFunctions(ShaderFunctionRegistry& registry)
 
 void registerShadowingFunctions(ShaderFunctionRegistry& registry)
 {
-    registry.add({"Shadowing", "null", "Shadowing/null.glsl", "", {}, {}, {}, {}, nullptr, false});
+    registry.add(ShaderFunction::plain("Shadowing", "null"));
 }
 
 void registerAccelerationFunctions(ShaderFunctionRegistry& registry)
 {
-    registry.add({"Acceleration", "null", "Acceleration/null.glsl", "", {}, {}, {}, {}, nullptr, false});
+    registry.add(ShaderFunction::plain("Acceleration", "null"));
 }
 
 }  // namespace volren

@@ -36,8 +36,8 @@ osg::Texture2D* jitterTile()
 
 void registerJitterFunctions(ShaderFunctionRegistry& registry)
 {
-    registry.add({"Jitter", "null", "Jitter/null.glsl", "", {}, {}, {}, {}, nullptr, false});
-    registry.add({"Jitter", "hash", "Jitter/hash.glsl", "", {}, {}, {}, {}, nullptr, false});
+    registry.add(ShaderFunction::plain("Jitter", "null"));
+    registry.add(ShaderFunction::plain("Jitter", "hash"));
 
     ShaderFunction texture;
     texture.slot = "Jitter";

@@ -45,6 +45,7 @@ double isoValueOf(const BindContext& c)
 ShaderFunction traversal(const std::string& name, std::vector<UniformDecl> extra = {})
 {
     ShaderFunction f;
+    f.calls = {"Reconstruction", "Classification", "ClipPosition", "Shading", "Acceleration"};
     f.slot = "RayTraversal";
     f.name = name;
     f.file = "RayTraversal/" + name + ".glsl";
@@ -58,9 +59,16 @@ ShaderFunction traversal(const std::string& name, std::vector<UniformDecl> extra
 
 void registerRayTraversalFunctions(ShaderFunctionRegistry& registry)
 {
-    registry.add({"RayTraversal", "null", "RayTraversal/null.glsl", "", {}, {}, {}, {}, nullptr, false});
-    for (const char* name : {"dvr_front_to_back", "dvr_back_to_front", "mip", "minip", "average"})
-        registry.add(traversal(name));
+    ShaderFunction none{"RayTraversal", "null", "RayTraversal/null.glsl", "", {}, {}, {}, {}, nullptr, false, {}};
+    none.calls = {"RayTraversal"};  // calls nothing else (a slot list may not be empty)
+    registry.add(none);
+    registry.add(traversal("dvr_front_to_back"));
+    registry.add(traversal("dvr_back_to_front"));
+    for (const char* name : {"mip", "minip", "average"}) {  // projections: they never shade
+        ShaderFunction f = traversal(name);
+        f.calls = {"Reconstruction", "Classification", "ClipPosition"};
+        registry.add(f);
+    }
 
     ShaderFunction mida = traversal("mida", bindings::window);
     mida.bind = [](BindContext& c) {
@@ -70,6 +78,7 @@ void registerRayTraversalFunctions(ShaderFunctionRegistry& registry)
     registry.add(mida);
 
     ShaderFunction gmip = traversal("gmip", bindings::window + std::vector<UniformDecl>{bindings::gradientScale});
+    gmip.calls = {"Gradient", "Classification", "ClipPosition"};
     gmip.bind = [](BindContext& c) {
         bindMarching(c);
         bindings::bindWindow(c);

@@ -7,7 +7,7 @@ namespace volren {
 
 void registerReconstructionFunctions(ShaderFunctionRegistry& registry)
 {
-    registry.add({"Reconstruction", "null", "Reconstruction/null.glsl", "", {}, {}, {}, {}, nullptr, false});
+    registry.add(ShaderFunction::plain("Reconstruction", "null"));
     for (const char* name : {"nearest", "trilinear", "tricubic"}) {
         ShaderFunction f;
         f.slot = "Reconstruction";

@@ -13,7 +13,7 @@ using bindings::operator+;
 
 void registerShadingFunctions(ShaderFunctionRegistry& registry)
 {
-    registry.add({"Shading", "null", "Shading/null.glsl", "", {}, {}, {}, {}, nullptr, false});
+    registry.add(ShaderFunction::plain("Shading", "null"));
 
     ShaderFunction lighting{"Shading", "lighting", "Shading/lighting.glsl", "", {"Shading/lights.glsl"},
                             bindings::geometry + bindings::lights, {}, {}, nullptr, false};
