@@ -1,44 +1,10 @@
-// RaySetup/box_intersection: owns main().
-// The ray runs from this pixel's point on the near plane to its point on the far plane, in
-// volume texture space; it is intersected with the box [0,1]^3. Because it starts on the near
-// plane, a camera inside the volume (or a near plane cutting the box) marches only what lies
-// in front of the camera, for perspective and orthographic projections alike.
-// A traversal that reports a surface (tHit >= 0) sets the fragment depth there.
-in vec4 volren_vClip;
-flat in mat4 volren_clipToTexture;
-flat in mat4 volren_textureToClip;
-out vec4 volren_fragColor;
-
+// RaySetup/box_intersection: owns main(). Entry and exit by ray/box intersection (ray.glsl);
+// the proxy draws the box's back faces, so every pixel the box covers casts one ray.
 void main()
 {
-    vec2 ndc = volren_vClip.xy / volren_vClip.w;
-    vec4 nearPoint = volren_clipToTexture * vec4(ndc, -1.0, 1.0);
-    vec4 farPoint = volren_clipToTexture * vec4(ndc, 1.0, 1.0);
-    vec3 origin = nearPoint.xyz / nearPoint.w;
-    vec3 dir = farPoint.xyz / farPoint.w - origin;
-
-    // Slab test; zero direction components are nudged so the divisions stay finite.
-    vec3 safeDir = mix(dir, vec3(1e-30), equal(dir, vec3(0.0)));
-    vec3 t0 = -origin / safeDir;
-    vec3 t1 = (vec3(1.0) - origin) / safeDir;
-    vec3 tMin = min(t0, t1);
-    vec3 tMax = max(t0, t1);
-    float tNear = max(max(tMin.x, tMin.y), max(tMin.z, 0.0));
-    float tFar = min(min(tMax.x, tMax.y), min(tMax.z, 1.0));
-
-    volren_clipRay(origin, dir, tNear, tFar);
-    if (!(tNear < tFar)) discard;
-
-    float tHit;
-    vec4 color = volren_traverse(origin, dir, tNear, tFar, volren_jitter(gl_FragCoord.xy), tHit);
-    if (any(isnan(color))) color = vec4(0.0);  // never let NaN reach the framebuffer
-    if (volren_writesDepth) {
-        if (tHit < 0.0) discard;  // no surface on this ray: leave colour and depth alone
-        // Depth of the hit: the near-to-far parameter maps back through the projection.
-        vec4 clip = volren_textureToClip * vec4(origin + dir * tHit, 1.0);
-        gl_FragDepth = clamp(0.5 * (clip.z / clip.w) + 0.5, 0.0, 1.0);
-    } else {
-        gl_FragDepth = gl_FragCoord.z;
-    }
-    volren_fragColor = color;
+    vec3 origin, dir;
+    volren_pixelRay(origin, dir);
+    float tNear, tFar;
+    volren_boxInterval(origin, dir, tNear, tFar);
+    volren_castRay(origin, dir, tNear, tFar);
 }

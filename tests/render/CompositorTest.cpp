@@ -55,8 +55,10 @@ TEST(Compositor, ComposedSourceHoldsEachChosenFileOnceWithLineMarkers)
     const std::string decl = "uniform vec3 volren_worldSize;";
     EXPECT_NE(src.find(decl), std::string::npos);
     EXPECT_EQ(src.find(decl), src.rfind(decl));
-    // header, numerics, slots.glsl, the traversal's march.glsl include, one per slot
-    ASSERT_EQ(p->sourceNames.size(), 4u + slots().size());
+    // header, numerics, slots.glsl, the traversal's march.glsl and the ray setup's ray.glsl
+    // includes, one per slot
+    ASSERT_EQ(p->sourceNames.size(), 5u + slots().size());
+    EXPECT_EQ(p->sourceNames[p->sourceNames.size() - 2], "RaySetup/ray.glsl");
     EXPECT_EQ(p->sourceNames.back(), "RaySetup/box_intersection.glsl");
     EXPECT_EQ(p->textureUnits.at("volren_volume"), 0);
     EXPECT_EQ(p->textureUnits.at("volren_transferFunction"), 1);
@@ -85,7 +87,9 @@ TEST(Compositor, MissingShaderFileNamesImplementationAndPath)
 {
     ShaderFunctionRegistry registry;
     registry.addBuiltins();
-    registry.add({"Jitter", "hash", "Jitter/does_not_exist.glsl", "", {}, {}, {}, {}, nullptr, false});
+    ShaderFunction missing = ShaderFunction::plain("Jitter", "hash");
+    missing.file = "Jitter/does_not_exist.glsl";
+    registry.add(missing);
     ShaderCompositor compositor(registry);
     try {
         compositor.program(Composition{});
@@ -115,7 +119,7 @@ TEST(Compositor, DriverLogLinesAreMappedToShaderFiles)
 {
     ShaderCompositor compositor;
     auto p = compositor.program(Composition{});
-    const std::size_t traversal = p->sourceNames.size() - 2;  // RayTraversal precedes RaySetup
+    const std::size_t traversal = p->sourceNames.size() - 3;  // RayTraversal, ray.glsl, RaySetup
     const std::string mesa = std::to_string(traversal) + ":17(5): error: `foo' undeclared\n";
     const std::string nvidia = std::to_string(traversal) + "(17) : error C1008: undefined variable \"foo\"\n";
     EXPECT_EQ(ShaderCompositor::explainLog(mesa, *p), "RayTraversal/dvr_front_to_back.glsl:17: error: `foo' undeclared\n");

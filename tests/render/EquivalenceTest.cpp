@@ -8,6 +8,7 @@
 #include <osg/LightSource>
 
 #include <cmath>
+#include <map>
 #include <cstring>
 
 namespace volren::test {
@@ -150,6 +151,31 @@ TEST_F(Equivalence, HashJitterDiffersFromNoJitterOnlyByNoise)
     EXPECT_GT(meanAbs, 1e-4) << "jitter must change samples";
     EXPECT_LT(std::abs(meanSigned), 0.01) << "but not the mean brightness";
     EXPECT_LT(meanAbs, 0.03);
+}
+
+TEST_F(Equivalence, RaySetupsAgreeWithTheCameraOutsideAndInside)
+{
+    // Outside (the existing view) and inside the box (20 x 16 x 18 world units), perspective.
+    const osg::Matrixd outside = osg::Matrixd::lookAt(osg::Vec3d(25, -30, 20), osg::Vec3d(), osg::Vec3d(0, 0, 1));
+    const osg::Matrixd inside = osg::Matrixd::lookAt(osg::Vec3d(3, 1, 0), osg::Vec3d(-5, 3, 2), osg::Vec3d(0, 0, 1));
+    for (const osg::Matrixd& view : {outside, inside}) {
+        std::map<std::string, Pixels> images;
+        for (const char* setup : {"box_intersection", "hybrid", "rasterised"}) {
+            osg::ref_ptr<VolumeNode> node = lumpy();
+            node->settings.functions["RaySetup"] = setup;
+            images[setup] = render(node.get(), 48, 40, view, osg::Matrixd::perspective(50, 1.2, 0.5, 200));
+        }
+        const Pixels& reference = images["box_intersection"];
+        EXPECT_GT(covered(reference), 400);
+        for (const char* setup : {"hybrid", "rasterised"}) {
+            const Pixels& p = images[setup];
+            double worst = 0.0;
+            for (std::size_t i = 0; i < p.rgba.size(); ++i)
+                for (int c = 0; c < 4; ++c) worst = std::max(worst, double(std::abs(p.rgba[i][c] - reference.rgba[i][c])));
+            EXPECT_LT(worst, 2e-3) << setup << (&view == &inside ? " inside" : " outside");
+            EXPECT_EQ(covered(p), covered(reference)) << setup;
+        }
+    }
 }
 
 }  // namespace

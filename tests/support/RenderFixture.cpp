@@ -1,5 +1,8 @@
 #include "RenderFixture.h"
 
+#include <osg/Geode>
+#include <osg/Geometry>
+
 #include <memory>
 
 namespace volren::test {
@@ -48,6 +51,36 @@ Pixels RenderFixture::renderOrthoFromPlusZ(osg::Node* scene, int width, int heig
     const osg::Matrixd view = osg::Matrixd::lookAt(osg::Vec3d(0, 0, distance), osg::Vec3d(0, 0, 0), osg::Vec3d(0, 1, 0));
     const osg::Matrixd projection = osg::Matrixd::ortho(-w, w, -h, h, 1.0, 2.0 * distance);
     return render(scene, width, height, view, projection, background);
+}
+
+osg::ref_ptr<osg::Node> RenderFixture::flatSquare(const osg::Vec3& centre, float halfSize, const osg::Vec4& colour)
+{
+    osg::ref_ptr<osg::Vec3Array> corners = new osg::Vec3Array;
+    for (const osg::Vec2 c : {osg::Vec2(-1, -1), osg::Vec2(1, -1), osg::Vec2(1, 1), osg::Vec2(-1, 1)})
+        corners->push_back(centre + osg::Vec3(c.x(), c.y(), 0.0f) * halfSize);
+    osg::ref_ptr<osg::Geometry> square = new osg::Geometry;
+    square->setUseDisplayList(false);
+    square->setUseVertexBufferObjects(true);
+    square->setUseVertexArrayObject(true);
+    square->setVertexArray(corners.get());
+    square->addPrimitiveSet(new osg::DrawArrays(GL_TRIANGLE_FAN, 0, 4));
+    osg::ref_ptr<osg::Program> program = new osg::Program;
+    program->addShader(new osg::Shader(osg::Shader::VERTEX, "#version 430 core\n"
+                                                            "in vec4 osg_Vertex;\n"
+                                                            "uniform mat4 osg_ModelViewProjectionMatrix;\n"
+                                                            "void main() { gl_Position = osg_ModelViewProjectionMatrix * osg_Vertex; }\n"));
+    program->addShader(new osg::Shader(osg::Shader::FRAGMENT, "#version 430 core\n"
+                                                              "uniform vec4 colour;\n"
+                                                              "out vec4 fragColour;\n"
+                                                              "void main() { fragColour = colour; }\n"));
+    program->addBindFragDataLocation("fragColour", 0);
+    osg::StateSet* ss = square->getOrCreateStateSet();
+    ss->setAttributeAndModes(program.get(), osg::StateAttribute::ON);
+    ss->addUniform(new osg::Uniform("colour", colour));
+    ss->setMode(GL_CULL_FACE, osg::StateAttribute::OFF);
+    osg::ref_ptr<osg::Geode> geode = new osg::Geode;
+    geode->addDrawable(square.get());
+    return geode;
 }
 
 osg::ref_ptr<VolumeNode> RenderFixture::volumeNode(Volume* volume, TransferFunction* tf, bool jitter)

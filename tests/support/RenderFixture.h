@@ -34,6 +34,10 @@ public:
     static Pixels render(osg::Node* scene, int width, int height, const osg::Matrixd& view,
                          const osg::Matrixd& projection, const osg::Vec3& background = {0, 0, 0});
 
+    /// An opaque square of `colour` in the plane z = centre.z, 2 * halfSize wide, drawn with a
+    /// flat-colour program (so it looks the same in compatibility and core profiles).
+    static osg::ref_ptr<osg::Node> flatSquare(const osg::Vec3& centre, float halfSize, const osg::Vec4& colour);
+
     /// A VolumeNode showing `volume` through `tf`, jitter off unless asked.
     static osg::ref_ptr<VolumeNode> volumeNode(Volume* volume, TransferFunction* tf, bool jitter = false);
 };

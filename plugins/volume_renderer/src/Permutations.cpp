@@ -1,6 +1,7 @@
 #include <volume_renderer/Permutations.h>
 #include <volume_renderer/Slots.h>
 
+#include <algorithm>
 #include <set>
 #include <sstream>
 
@@ -60,6 +61,11 @@ bool PermutationSpace::isValid(const Composition& c)
         return c.key() == bare.key();
     }
     if ((gradient == "null") != (input == "null")) return false;
+    for (const auto& [slot, names] : c.instances)  // implementations that exist once per scene
+        for (const std::string& name : names) {
+            const ShaderFunction* f = ShaderFunctionRegistry::instance().find(slot, name);
+            if (f && f->single && std::count(names.begin(), names.end(), name) > 1) return false;
+        }
     if (c.functionFor("Shadowing") != "null" || c.functionFor("Acceleration") != "null") return false;
     const bool lit = shading == "lighting" || shading == "lighting_threshold";
     if (lit && (illumination == "null" || c.lightCount == 0)) return false;

@@ -151,12 +151,12 @@ std::shared_ptr<const ComposedProgram> ShaderCompositor::build(const Composition
     int nextUnit = 0;
     for (const Binding& b : result->bindings) {
         for (const TextureDecl& t : b.function->textures) {
-            const std::string name = t.name + b.suffix;
+            const std::string name = t.shared ? t.name : t.name + b.suffix;
             if (!result->textureUnits.count(name)) result->textureUnits[name] = nextUnit++;
             declare(name, t.samplerType, b.function);
         }
         for (const UniformDecl& u : b.function->uniforms) {
-            const std::string name = u.name + b.suffix;
+            const std::string name = u.shared ? u.name : u.name + b.suffix;
             declare(u.arraySize.empty() ? name : name + "[" + u.arraySize + "]", u.glslType, b.function);
         }
     }
@@ -201,8 +201,10 @@ std::shared_ptr<const ComposedProgram> ShaderCompositor::build(const Composition
         std::string calls;
         for (const Binding* b : mine) {
             std::string text = renameIdentifier(source(b->function), s.function, s.function + b->suffix);
-            for (const UniformDecl& u : b->function->uniforms) text = renameIdentifier(text, u.name, u.name + b->suffix);
-            for (const TextureDecl& t : b->function->textures) text = renameIdentifier(text, t.name, t.name + b->suffix);
+            for (const UniformDecl& u : b->function->uniforms)
+                if (!u.shared) text = renameIdentifier(text, u.name, u.name + b->suffix);
+            for (const TextureDecl& t : b->function->textures)
+                if (!t.shared) text = renameIdentifier(text, t.name, t.name + b->suffix);
             append(b->function->file + " (instance " + std::to_string(b->instance) + ")", text);
             calls += (calls.empty() || s.join.empty() ? "" : s.join) +
                      replaceAll(s.call, "{k}", std::to_string(b->instance));

@@ -55,8 +55,40 @@ public:
     std::vector<std::pair<VolumeNode*, osg::Matrix>> volumes;
     std::vector<std::pair<const osg::LightSource*, osg::Matrix>> lights;
     std::vector<std::pair<const ClipNode*, osg::Matrix>> clips;
+    bool opaqueGeometry = false;  ///< some drawable outside the transparent bins
 
+    void apply(osg::Drawable& drawable) override
+    {
+        if (_transparent == 0 && !isTransparent(drawable.getStateSet())) opaqueGeometry = true;
+    }
     void apply(osg::Node& node) override
+    {
+        const bool transparent = isTransparent(node.getStateSet());
+        _transparent += transparent;
+        visit(node);
+        _transparent -= transparent;
+    }
+    void apply(osg::LightSource& light) override
+    {
+        if (light.getLight()) lights.emplace_back(&light, _matrix);
+        apply(static_cast<osg::Node&>(light));
+    }
+    void apply(osg::Transform& transform) override
+    {
+        const osg::Matrix saved = _matrix;
+        transform.computeLocalToWorldMatrix(_matrix, this);
+        apply(static_cast<osg::Node&>(transform));
+        _matrix = saved;
+    }
+
+private:
+    /// Whether state puts what it applies to after the opaque bin (blended geometry).
+    static bool isTransparent(const osg::StateSet* ss)
+    {
+        return ss && (ss->getRenderingHint() == osg::StateSet::TRANSPARENT_BIN ||
+                      (ss->getRenderBinMode() != osg::StateSet::INHERIT_RENDERBIN_DETAILS && ss->getBinNumber() > 0));
+    }
+    void visit(osg::Node& node)
     {
         if (auto* v = dynamic_cast<VolumeNode*>(&node)) {
             if (v->getVolume() && v->getTransferFunction() && v->getVolume()->voxelCount() > 0)
@@ -69,21 +101,8 @@ public:
         }
         traverse(node);
     }
-    void apply(osg::LightSource& light) override
-    {
-        if (light.getLight()) lights.emplace_back(&light, _matrix);
-        traverse(light);
-    }
-    void apply(osg::Transform& transform) override
-    {
-        const osg::Matrix saved = _matrix;
-        transform.computeLocalToWorldMatrix(_matrix, this);
-        traverse(transform);
-        _matrix = saved;
-    }
-
-private:
     osg::Matrix _matrix;
+    int _transparent = 0;
 };
 
 osg::ref_ptr<osg::Geometry> makeBoxGeometry(const osg::Vec3d& size)
@@ -117,6 +136,7 @@ SceneOffer offerFor(const VolumeNode& node, const osg::Matrix& volumeMatrix, con
                     const osg::Matrix& sceneModelView)
 {
     SceneOffer offer;
+    offer.opaqueGeometry = scene.opaqueGeometry;
     const osg::Matrixd sceneToLocal = osg::Matrixd::inverse(volumeMatrix);
     const osg::Matrixd eyeToLocal = osg::Matrixd::inverse(volumeMatrix * sceneModelView);
     for (const auto& [source, matrix] : scene.lights) {
@@ -246,6 +266,9 @@ Composition VolumeScene::chooseComposition(const VolumeNode& node, const SceneOf
         if (!planesPerSample) rayInstances.push_back("plane");
         else if (!positionOff) positionInstances.push_back("plane");
     }
+    // Opaque geometry ends the rays where it stands (drawn first; its depth copied for the rays).
+    const bool rayClipOff = forcedNull("ClipRay") || (rayChoice != s.functions.end() && rayChoice->second == "null");
+    if (offer.opaqueGeometry && !rayClipOff) rayInstances.push_back("depth");
     if (!positionOff)
         for (const ClipInfo& shape : offer.shapes) {
             const char* kind = dynamic_cast<const ClipMaskNode*>(shape.node) ? "mask"
@@ -289,7 +312,7 @@ std::vector<std::pair<std::string, std::shared_ptr<const ComposedProgram>>> Volu
 std::size_t VolumeScene::auxiliaryTextureCount() const
 {
     std::lock_guard<std::mutex> lock(_mutex);
-    return _volumeTextures.size() + _tables.size();
+    return _volumeTextures.size() + _tables.size() + _screen.textureCount();
 }
 
 osg::Texture* VolumeScene::volumeTexture(const Volume& volume, bool nearest)
@@ -398,6 +421,7 @@ void VolumeScene::traverse(osg::NodeVisitor& nv)
 
     std::lock_guard<std::mutex> lock(_mutex);
     ++_cullCount;
+    _screen.beginCull(*cv, _cullCount);
     std::set<std::string> keys;
     for (auto& [node, matrix] : collector.volumes) {
         Proxy* proxy = nullptr;
@@ -410,7 +434,18 @@ void VolumeScene::traverse(osg::NodeVisitor& nv)
         proxy->lastCull = _cullCount;
         proxy->transform->setMatrix(matrix);
         keys.insert(proxy->key);
+        // Per-camera screen data of the composition: bound by state pushed around the proxy.
+        int pushed = 0;
+        if (proxy->program->needs(AuxData::DepthTexture)) {
+            cv->pushStateSet(_screen.depthState(*cv, proxy->program->textureUnits.at("volren_depthTexture")));
+            ++pushed;
+        }
+        if (proxy->program->needs(AuxData::EntryPoints)) {
+            cv->pushStateSet(_screen.entryState(*cv, node, *proxy->geometry, proxy->boxSize, matrix));
+            ++pushed;
+        }
         proxy->transform->accept(*cv);
+        for (; pushed > 0; --pushed) cv->popStateSet();
     }
     _lastKeys.assign(keys.begin(), keys.end());
 
@@ -420,6 +455,7 @@ void VolumeScene::traverse(osg::NodeVisitor& nv)
     for (auto it = _volumeTextures.begin(); it != _volumeTextures.end();)
         it = stale(it->second.lastCull) ? _volumeTextures.erase(it) : std::next(it);
     for (auto it = _tables.begin(); it != _tables.end();) it = stale(it->second.lastCull) ? _tables.erase(it) : std::next(it);
+    _screen.endCull(_cullCount);
 }
 
 void VolumeScene::checkPrograms(osg::State& state) const

@@ -13,6 +13,7 @@ namespace volren {
 /// - RaySetup null or RayTraversal null: nothing marches, so every other slot is null (two
 ///   compositions: box setup with null traversal, and null setup);
 /// - Gradient null <=> GradientInput null; Shadowing and Acceleration only null (no others yet);
+/// - a template implementation marked `single` (ClipRay depth) appears at most once;
 /// - lighting shadings need a non-null Illumination and at least one light; null shading has
 ///   null Illumination and no lights; debug shading has null Illumination;
 /// - traversals that never call Shading (MIP, MinIP, average, GMIP: ShaderFunction::calls)

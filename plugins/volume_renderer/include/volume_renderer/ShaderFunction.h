@@ -24,6 +24,7 @@ struct UniformDecl
     std::string name;       ///< GLSL name, `volren_` prefixed
     std::string glslType;   ///< "float", "vec2", "mat4", ...
     std::string arraySize;  ///< GLSL array size expression, empty for a single value
+    bool shared = false;    ///< one value per program: not renamed per template instance
 };
 
 /// A texture an implementation samples; the compositor gives each distinct name a unit.
@@ -31,10 +32,16 @@ struct TextureDecl
 {
     std::string name;         ///< GLSL sampler name
     std::string samplerType;  ///< "sampler3D", "sampler1D", ...
+    bool shared = false;      ///< one texture per program: not renamed per template instance
 };
 
 /// Auxiliary data an implementation needs; the renderer creates only what a composition asks for.
-enum class AuxData { VolumeTexture, TransferFunctionTable, PremultipliedTable, JitterTexture };
+/// The screen-sized ones are per camera and bound by the pass itself (VolumeScene):
+/// - DepthTexture: the depth of the opaque geometry drawn before the volumes, as sampler2D
+///   `volren_depthTexture` read with texelFetch at gl_FragCoord.xy - `volren_viewportOrigin`;
+/// - EntryPoints: the volume-space points of the box's rasterised front faces, as image2D
+///   `volren_entryPoints` (rgba32f: xyz, w = `volren_frameStamp` of the frame that wrote it).
+enum class AuxData { VolumeTexture, TransferFunctionTable, PremultipliedTable, JitterTexture, DepthTexture, EntryPoints };
 
 /// A light as the volume sees it, in the VolumeNode's local coordinates.
 struct LightInfo
@@ -72,6 +79,15 @@ struct BindContext
 
     /// Name of `base` for the instance being bound (adds the template suffix).
     std::string name(const std::string& base) const { return base + suffix; }
+    /// Runs `bind(*this)` with the template suffix off, for uniforms declared `shared`.
+    template <typename F>
+    void unsuffixed(F bind)
+    {
+        const std::string saved = suffix;
+        suffix.clear();
+        bind(*this);
+        suffix = saved;
+    }
     /// The clip shape of the template instance being bound.
     const ClipInfo& clip() const;
 
@@ -126,6 +142,7 @@ struct ShaderFunction
     std::vector<AuxData> needs;         ///< auxiliary data the renderer must create
     std::function<void(BindContext&)> bind;  ///< sets this frame's uniform values and textures
     bool writesDepth = false;           ///< RayTraversal: reports a surface hit (isosurface)
+    bool single = false;                ///< template slots: at most one instance per composition
     /// Slots this implementation calls; empty = any. The scene analysis makes slots that no
     /// chosen implementation calls null, so they cost nothing.
     std::vector<std::string> calls = {};

@@ -1,4 +1,5 @@
 #pragma once
+#include <volume_renderer/ScreenPasses.h>
 #include <volume_renderer/ShaderCompositor.h>
 
 #include <volume_model/VolumeNode.h>
@@ -23,12 +24,14 @@ struct SceneOffer
     std::vector<LightInfo> lights;  ///< lights in the VolumeNode's local coordinates
     std::vector<ClipInfo> planes;   ///< clip planes that cut the volume
     std::vector<ClipInfo> shapes;   ///< other clip shapes (box, ellipsoid, mask) that change it
+    bool opaqueGeometry = false;    ///< opaque polygons are drawn before the volumes
 };
 
 /// Root of a mixed scene and the pass that draws its volumes. Children are drawn as usual;
-/// at cull time the scene is analysed (volumes, lights, clip shapes), each volume's
-/// composition is chosen, and a ray-cast proxy (the volume's box, back faces) is drawn after
-/// the opaque geometry. Nothing a volume does not use is compiled, bound or allocated.
+/// at cull time the scene is analysed (volumes, lights, clip shapes, opaque geometry), each
+/// volume's composition is chosen, and a ray-cast proxy (the volume's box, back faces) is drawn
+/// after the opaque geometry, whose depth ends the rays (ScreenPasses). Nothing a volume does
+/// not use is compiled, bound or allocated.
 class VolumeScene : public osg::Group
 {
 public:
@@ -86,6 +89,7 @@ private:
     osg::Texture* volumeTexture(const Volume& volume, bool nearest);
 
     ShaderCompositor _compositor;
+    ScreenPasses _screen;
     mutable std::mutex _mutex;
     std::map<const VolumeNode*, Proxy> _proxies;
     std::map<std::pair<const Volume*, bool>, VolumeGL> _volumeTextures;

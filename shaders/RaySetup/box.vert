@@ -1,11 +1,13 @@
 #version 430 core
-// RaySetup/box_intersection, vertex stage: draws the volume box (dims * spacing, centred on the
+// RaySetup vertex stage (every ray setup): draws the volume box (dims * spacing, centred on the
 // node's origin; its corners are the proxy geometry's vertices) and hands the fragment stage
-// its clip-space position and the clip -> volume-texture-space matrix.
+// its clip-space position, its volume-texture-space position (the rasterised "colour cube")
+// and the clip <-> volume-texture-space matrices.
 in vec4 osg_Vertex;
 uniform mat4 osg_ModelViewProjectionMatrix;
 uniform vec3 volren_worldSize;
 out vec4 volren_vClip;
+out vec3 volren_vTexCoord;
 flat out mat4 volren_clipToTexture;
 flat out mat4 volren_textureToClip;
 
@@ -20,4 +22,5 @@ void main()
     volren_textureToClip = textureToClip;
     gl_Position = osg_ModelViewProjectionMatrix * osg_Vertex;
     volren_vClip = gl_Position;
+    volren_vTexCoord = osg_Vertex.xyz / volren_worldSize + vec3(0.5);
 }

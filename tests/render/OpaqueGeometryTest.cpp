@@ -1,0 +1,129 @@
+// Opaque polygons inside and around a volume: the rays end at the geometry's depth (ClipRay
+// depth), so the geometry shows attenuated by exactly the medium in front of it.
+#include "RenderFixture.h"
+#include "TestData.h"
+
+#include <osg/BlendFunc>
+
+#include <cmath>
+
+namespace volren::test {
+namespace {
+
+/// A 16^3 homogeneous absorbing medium (black emission, opacity 0.2 per voxel of spacing 1)
+/// centred at the origin, so light crossing d world units keeps 0.8^d of itself.
+class OpaqueGeometry : public RenderFixture
+{
+protected:
+    static constexpr double alpha = 0.2;
+    static constexpr int n = 16;
+
+    static osg::ref_ptr<VolumeScene> sceneWith(osg::Node* geometry)
+    {
+        osg::ref_ptr<VolumeScene> scene = new VolumeScene;
+        osg::ref_ptr<VolumeNode> node = volumeNode(constantVolume(VoxelType::UInt8, {n, n, n}, 100).get(),
+                                                   constantTransferFunction(osg::Vec4(0, 0, 0, float(alpha))).get());
+        node->settings.earlyTerminationThreshold = 1.0;  // exact transmittance behind the whole box
+        scene->addChild(node.get());
+        if (geometry) scene->addChild(geometry);
+        return scene;
+    }
+    static double transmittance(double length) { return std::pow(1.0 - alpha, length); }
+};
+
+TEST_F(OpaqueGeometry, SquareInsideIsAttenuatedByTheMediumInFrontOfItOrthographic)
+{
+    for (const float z : {6.0f, 0.0f, -5.5f}) {
+        osg::ref_ptr<VolumeScene> scene = sceneWith(flatSquare({0, 0, z}, 4.0f, osg::Vec4(1, 1, 1, 1)).get());
+        // 40 x 40 pixels over 20 x 20 world units: the square covers pixel centres 12..27.
+        const Pixels img = renderOrthoFromPlusZ(scene.get(), 40, 40, 20.0);
+        ASSERT_NE(scene->compositionKeys()[0].find("ClipRay=[depth];"), std::string::npos) << scene->compositionKeys()[0];
+        const double expected = transmittance(n / 2.0 - z);
+        for (int y = 12; y < 28; ++y)
+            for (int x = 12; x < 28; ++x) {
+                ASSERT_NEAR(img.at(x, y).g(), expected, 2e-4) << "z " << z << " pixel " << x << "," << y;
+                ASSERT_NEAR(img.at(x, y).a(), 1.0, 1e-6);
+            }
+        // Beside the square the whole depth of the box absorbs (nothing behind it: alpha only).
+        EXPECT_NEAR(img.at(6, 20).a(), 1.0 - transmittance(n), 2e-4);
+        EXPECT_NEAR(img.at(6, 20).g(), 0.0, 1e-6);
+    }
+}
+
+TEST_F(OpaqueGeometry, SquareBehindIsAttenuatedByTheWholeBoxAndInFrontNotAtAll)
+{
+    osg::ref_ptr<VolumeScene> behind = sceneWith(flatSquare({0, 0, -12.0f}, 4.0f, osg::Vec4(1, 0.5f, 0.25f, 1)).get());
+    Pixels img = renderOrthoFromPlusZ(behind.get(), 40, 40, 20.0);
+    EXPECT_NEAR(img.at(20, 20).r(), transmittance(n), 2e-4);
+    EXPECT_NEAR(img.at(20, 20).b(), 0.25 * transmittance(n), 2e-4);
+
+    osg::ref_ptr<VolumeScene> front = sceneWith(flatSquare({0, 0, 12.0f}, 4.0f, osg::Vec4(1, 0.5f, 0.25f, 1)).get());
+    img = renderOrthoFromPlusZ(front.get(), 40, 40, 20.0);
+    EXPECT_EQ(img.at(20, 20), osg::Vec4(1, 0.5f, 0.25f, 1)) << "nothing of the volume lies in front of it";
+    EXPECT_NEAR(img.at(6, 20).a(), 1.0 - transmittance(n), 2e-4) << "the volume beside it is unchanged";
+}
+
+TEST_F(OpaqueGeometry, PerspectiveRaysEndAtTheSquareAlongTheirOwnSlantedPath)
+{
+    osg::ref_ptr<VolumeScene> scene = sceneWith(flatSquare({0, 0, -2.0f}, 6.0f, osg::Vec4(1, 1, 1, 1)).get());
+    const int size = 48;
+    const osg::Vec3d eye(3, -4, 30);
+    const osg::Matrixd view = osg::Matrixd::lookAt(eye, osg::Vec3d(0, 0, 0), osg::Vec3d(0, 1, 0));
+    const osg::Matrixd projection = osg::Matrixd::perspective(40, 1, 5, 60);
+    const Pixels img = render(scene.get(), size, size, view, projection);
+    const osg::Matrixd toWorld = osg::Matrixd::inverse(view * projection);
+    int checked = 0;
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            // This pixel's ray from the eye, through its centre, meets z = 8 (box top) and z = -2.
+            const osg::Vec3d ndc(2.0 * (x + 0.5) / size - 1.0, 2.0 * (y + 0.5) / size - 1.0, 0.0);
+            const osg::Vec3d dir = ndc * toWorld - eye;
+            const osg::Vec3d top = eye + dir * ((8.0 - eye.z()) / dir.z());
+            const osg::Vec3d hit = eye + dir * ((-2.0 - eye.z()) / dir.z());
+            // Only rays entering through the top face and hitting the square well inside its edges.
+            if (std::abs(top.x()) > 7.5 || std::abs(top.y()) > 7.5 || std::abs(hit.x()) > 5.5 || std::abs(hit.y()) > 5.5)
+                continue;
+            ASSERT_NEAR(img.at(x, y).r(), transmittance((top - hit).length()), 5e-4) << x << "," << y;
+            ++checked;
+        }
+    EXPECT_GT(checked, 300);
+}
+
+TEST_F(OpaqueGeometry, CameraInsideTheVolumeSeesTheSquareThroughWhatIsBetween)
+{
+    osg::ref_ptr<VolumeScene> scene = sceneWith(flatSquare({0, 0, -4.0f}, 6.0f, osg::Vec4(1, 1, 1, 1)).get());
+    const osg::Matrixd view = osg::Matrixd::lookAt(osg::Vec3d(0, 0, 3), osg::Vec3d(0, 0, 0), osg::Vec3d(0, 1, 0));
+    const Pixels img = render(scene.get(), 32, 32, view, osg::Matrixd::perspective(30, 1, 0.5, 50));
+    // The centre ray runs from the near plane (z = 2.5) to the square (z = -4).
+    EXPECT_NEAR(img.at(16, 16).r(), transmittance(6.5), 1e-3);
+    EXPECT_NEAR(img.at(15, 15).r(), transmittance(6.5), 1e-3);
+}
+
+TEST_F(OpaqueGeometry, TransparentGeometryAndEmptyScenesNeedNoDepthTexture)
+{
+    osg::ref_ptr<osg::Node> glass = flatSquare({0, 0, 0}, 4.0f, osg::Vec4(1, 1, 1, 0.5f));
+    glass->getOrCreateStateSet()->setRenderingHint(osg::StateSet::TRANSPARENT_BIN);
+    glass->getOrCreateStateSet()->setAttributeAndModes(new osg::BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA));
+    for (osg::Node* geometry : {static_cast<osg::Node*>(nullptr), glass.get()}) {
+        osg::ref_ptr<VolumeScene> scene = sceneWith(geometry);
+        renderOrthoFromPlusZ(scene.get(), 16, 16, 20.0);
+        EXPECT_NE(scene->compositionKeys()[0].find("ClipRay=[];"), std::string::npos) << scene->compositionKeys()[0];
+        EXPECT_EQ(scene->auxiliaryTextureCount(), 2u) << "volume and TF table only";
+    }
+    osg::ref_ptr<VolumeScene> opaque = sceneWith(flatSquare({0, 0, 0}, 4.0f, osg::Vec4(1, 1, 1, 1)).get());
+    renderOrthoFromPlusZ(opaque.get(), 16, 16, 20.0);
+    EXPECT_EQ(opaque->auxiliaryTextureCount(), 3u) << "plus the depth texture";
+}
+
+TEST_F(OpaqueGeometry, ClipRayForcedNullDrawsTheVolumeOverTheGeometry)
+{
+    osg::ref_ptr<VolumeScene> scene = sceneWith(flatSquare({0, 0, 0}, 4.0f, osg::Vec4(1, 1, 1, 1)).get());
+    scene->forceNull.insert("ClipRay");
+    const Pixels img = renderOrthoFromPlusZ(scene.get(), 40, 40, 20.0);
+    EXPECT_NE(scene->compositionKeys()[0].find("ClipRay=[];"), std::string::npos);
+    // The whole box is composited over the square.
+    EXPECT_NEAR(img.at(20, 20).r(), transmittance(n), 2e-4);
+}
+
+}  // namespace
+}  // namespace volren::test
