@@ -21,4 +21,5 @@ function(volren_add_osgdb_plugin ext)
     LIBRARY_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/${CMAKE_INSTALL_LIBDIR}/${VOLREN_OSG_PLUGIN_DIR}"
     INSTALL_RPATH "$ORIGIN/..")
   install(TARGETS ${target} LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/${VOLREN_OSG_PLUGIN_DIR})
+  set_property(GLOBAL APPEND PROPERTY VOLREN_OSGDB_PLUGINS ${target})  # tests depend on them all
 endfunction()

@@ -9,6 +9,7 @@
 #include <volume_model/ParseNumber.h>
 
 #include <nlohmann/json.hpp>
+#include <osg/GLObjects>
 #include <osg/LightSource>
 
 #include <algorithm>
@@ -127,7 +128,6 @@ int permutationsCommand(const std::vector<std::string>& args)
     renderer.setScene(scene.get());
     renderer.camera()->setViewMatrixAsLookAt(osg::Vec3d(20, -25, 15), osg::Vec3d(), osg::Vec3d(0, 0, 1));
     renderer.camera()->setProjectionMatrixAsPerspective(40, 1, 1, 100);
-    ShaderCompositor compositor;
     std::vector<double> compileMs;
     std::size_t failures = 0;
     nlohmann::json failed = nlohmann::json::array();
@@ -144,6 +144,8 @@ int permutationsCommand(const std::vector<std::string>& args)
                 for (int k = 0; k < 8 * 8 * 4; ++k)
                     if (!std::isfinite(px[k])) problem = "NaN or Inf pixel";
             } else {
+                // A compositor per composition: its cache would hold every program of the sweep.
+                ShaderCompositor compositor;
                 auto program = compositor.program(composition);
                 const auto start = std::chrono::steady_clock::now();
                 program->program->compileGLObjects(*renderer.state());
@@ -155,6 +157,7 @@ int permutationsCommand(const std::vector<std::string>& args)
                     problem = "link failed: " + ShaderCompositor::explainLog(log, *program);
                 }
                 program->program->releaseGLObjects(renderer.state());
+                osg::flushAllDeletedGLObjects(renderer.state()->getContextID());  // no frames flush them here
             }
         } catch (const std::exception& e) {
             problem = e.what();

@@ -96,3 +96,40 @@ TEST(Volume, ModifiedCountGrowsWithEveryChange)
 
 }  // namespace
 }  // namespace volren::test
+
+namespace volren::test {
+
+TEST(Volume, KeepsChannelsAndTimePointsAsBlocksOfTheGrid)
+{
+    osg::ref_ptr<Volume> v = new Volume;
+    v->allocate(VoxelType::UInt16, {4, 3, 2}, 2, 3);
+    EXPECT_EQ(v->channels(), 2);
+    EXPECT_EQ(v->frames(), 3);
+    EXPECT_EQ(v->voxelCount(), 24u);
+    EXPECT_EQ(v->totalVoxelCount(), 144u);
+    EXPECT_EQ(v->byteSize(), 288u);
+    EXPECT_EQ(v->block(0, 0), v->data());
+    EXPECT_EQ(v->block(1, 0) - v->data(), 48);      // channel 1 follows channel 0
+    EXPECT_EQ(v->block(1, 2) - v->data(), 5 * 48);  // time point 2, channel 1
+    EXPECT_THROW(v->block(2, 0), std::out_of_range);
+    EXPECT_THROW(v->block(0, 3), std::out_of_range);
+    const std::uint16_t hot = 9000;
+    std::memcpy(v->block(1, 2) + 2 * 23, &hot, 2);  // last voxel of the last block
+    v->dirty();
+    EXPECT_EQ(v->valueRange(), std::make_pair(0.0, 9000.0)) << "statistics cover every block";
+    EXPECT_EQ(v->storedValue(143), 9000.0);
+
+    std::vector<std::uint8_t> bytes(4 * 3 * 2 * 2 * 2);
+    EXPECT_THROW(v->assign(VoxelType::UInt16, {4, 3, 2}, std::vector<std::uint8_t>(bytes), 2, 2), std::invalid_argument);
+    v->assign(VoxelType::UInt16, {4, 3, 2}, std::move(bytes), 2, 1);
+    EXPECT_EQ(v->channels(), 2);
+    EXPECT_EQ(v->frames(), 1);
+    EXPECT_THROW(v->allocate(VoxelType::UInt8, {4, 4, 4}, 0, 1), std::invalid_argument);
+    EXPECT_THROW(v->allocate(VoxelType::UInt8, {4, 4, 4}, 1, -2), std::invalid_argument);
+    // 2^31-1 cubed overflows 64 bits long before the 2^34-voxel limit is checked naively.
+    EXPECT_THROW(Volume::checkedVoxelCount({2147483647, 2147483647, 2147483647}, 2147483647), std::invalid_argument);
+    EXPECT_THROW(Volume::checkedVoxelCount({1024, 1024, 1024}, 17), std::invalid_argument);
+    EXPECT_EQ(Volume::checkedVoxelCount({1024, 1024, 1024}, 16), std::uint64_t(1) << 34);
+}
+
+}  // namespace volren::test

@@ -39,6 +39,8 @@ Volume::Volume(const Volume& other, const osg::CopyOp& copyop)
       sourceFile(other.sourceFile),
       _type(other._type),
       _dims(other._dims),
+      _channels(other._channels),
+      _frames(other._frames),
       _spacing(other._spacing),
       _slope(other._slope),
       _intercept(other._intercept),
@@ -46,37 +48,73 @@ Volume::Volume(const Volume& other, const osg::CopyOp& copyop)
 {
 }
 
-std::uint64_t Volume::checkedVoxelCount(const osg::Vec3i& dims)
+std::uint64_t Volume::checkedVoxelCount(const osg::Vec3i& dims, std::uint64_t blocks)
 {
     if (dims.x() <= 0 || dims.y() <= 0 || dims.z() <= 0)
         throw std::invalid_argument("volume dimensions must be positive, got " + std::to_string(dims.x()) +
                                     "x" + std::to_string(dims.y()) + "x" + std::to_string(dims.z()));
-    const std::uint64_t n = std::uint64_t(dims.x()) * std::uint64_t(dims.y()) * std::uint64_t(dims.z());
-    if (n > maxVoxels)
-        throw std::invalid_argument("volume of " + std::to_string(n) + " voxels exceeds the limit of " +
-                                    std::to_string(maxVoxels) + " voxels");
+    if (blocks == 0) throw std::invalid_argument("a volume needs at least one channel and one time point");
+    // n stays <= maxVoxels, so the test n * factor <= maxVoxels never overflows.
+    std::uint64_t n = 1;
+    for (const std::uint64_t factor : {std::uint64_t(dims.x()), std::uint64_t(dims.y()), std::uint64_t(dims.z()), blocks}) {
+        if (factor > maxVoxels / n)
+            throw std::invalid_argument("volume of " + std::to_string(dims.x()) + "x" + std::to_string(dims.y()) + "x" +
+                                        std::to_string(dims.z()) + " voxels x " + std::to_string(blocks) +
+                                        " blocks exceeds the limit of " + std::to_string(maxVoxels) + " voxels");
+        n *= factor;
+    }
     return n;
 }
 
-void Volume::allocate(VoxelType type, const osg::Vec3i& dims)
+namespace {
+
+std::uint64_t blockCount(int channels, int frames)
 {
-    const std::uint64_t n = checkedVoxelCount(dims);
+    if (channels <= 0 || frames <= 0)
+        throw std::invalid_argument("channel and time point counts must be positive, got " + std::to_string(channels) +
+                                    " and " + std::to_string(frames));
+    return std::uint64_t(channels) * std::uint64_t(frames);
+}
+
+}  // namespace
+
+void Volume::allocate(VoxelType type, const osg::Vec3i& dims, int channels, int frames)
+{
+    const std::uint64_t n = checkedVoxelCount(dims, blockCount(channels, frames));
     _data.assign(std::size_t(n) * voxelSize(type), 0);
     _type = type;
     _dims = dims;
+    _channels = channels;
+    _frames = frames;
     dirty();
 }
 
-void Volume::assign(VoxelType type, const osg::Vec3i& dims, std::vector<std::uint8_t>&& bytes)
+void Volume::assign(VoxelType type, const osg::Vec3i& dims, std::vector<std::uint8_t>&& bytes, int channels, int frames)
 {
-    const std::uint64_t n = checkedVoxelCount(dims);
+    const std::uint64_t n = checkedVoxelCount(dims, blockCount(channels, frames));
     if (bytes.size() != n * voxelSize(type))
         throw std::invalid_argument("voxel buffer holds " + std::to_string(bytes.size()) + " bytes, expected " +
                                     std::to_string(n * voxelSize(type)));
     _data = std::move(bytes);
     _type = type;
     _dims = dims;
+    _channels = channels;
+    _frames = frames;
     dirty();
+}
+
+const std::uint8_t* Volume::block(int channel, int frame) const
+{
+    if (channel < 0 || channel >= _channels || frame < 0 || frame >= _frames)
+        throw std::out_of_range("volume has " + std::to_string(_channels) + " channels and " + std::to_string(_frames) +
+                                " time points; no block (" + std::to_string(channel) + ", " + std::to_string(frame) + ")");
+    const std::size_t index = std::size_t(frame) * std::size_t(_channels) + std::size_t(channel);
+    return _data.data() + index * voxelCount() * voxelSize(_type);
+}
+
+std::uint8_t* Volume::block(int channel, int frame)
+{
+    return const_cast<std::uint8_t*>(static_cast<const Volume&>(*this).block(channel, frame));
 }
 
 std::size_t Volume::voxelCount() const
@@ -128,7 +166,7 @@ void Volume::computeStatistics() const
 {
     Statistics s;
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-    const std::size_t n = voxelCount();
+    const std::size_t n = totalVoxelCount();
     for (std::size_t i = 0; i < n; ++i) {
         const double v = storedAt(_type, _data.data(), i);
         if (!std::isfinite(v)) {
@@ -170,7 +208,7 @@ Histogram Volume::histogram(std::size_t bins) const
     h.maxValue = hi > lo ? hi : lo + 1.0;
     h.counts.assign(std::max<std::size_t>(bins, 1), 0);
     const double scale = double(h.counts.size()) / (h.maxValue - h.minValue);
-    const std::size_t n = voxelCount();
+    const std::size_t n = totalVoxelCount();
     for (std::size_t i = 0; i < n; ++i) {
         const double v = storedAt(_type, _data.data(), i) * _slope + _intercept;
         if (!std::isfinite(v)) {

@@ -16,6 +16,9 @@ namespace volren {
 
 /// A scalar voxel grid: stored values, geometry and the mapping to data units. No GL.
 /// Voxel (i,j,k) is at index i + dims.x*(j + dims.y*k); data value = stored*slope + intercept.
+/// Files with several channels (multi-channel confocal stacks) or time points keep them all:
+/// the voxels are channels() x frames() blocks of dims, block (c, t) at index t*channels() + c;
+/// data() is block (0, 0), the one the renderer shows.
 class Volume : public osg::Object
 {
 public:
@@ -26,20 +29,29 @@ public:
     /// Largest number of voxels accepted (2^34); larger requests are refused, not attempted.
     static constexpr std::uint64_t maxVoxels = std::uint64_t(1) << 34;
 
-    /// Allocates zeroed voxels; throws std::invalid_argument for non-positive or too large dims.
-    void allocate(VoxelType type, const osg::Vec3i& dims);
+    /// Allocates zeroed voxels for `channels` x `frames` blocks of `dims`; throws
+    /// std::invalid_argument for non-positive or too large dims or counts.
+    void allocate(VoxelType type, const osg::Vec3i& dims, int channels = 1, int frames = 1);
     /// Takes ownership of `bytes` as the voxels (no copy); throws std::invalid_argument when
-    /// dims are invalid or bytes.size() != voxel count * voxel size.
-    void assign(VoxelType type, const osg::Vec3i& dims, std::vector<std::uint8_t>&& bytes);
-    /// Voxel count of `dims`, or an exception naming the problem (non-positive, over maxVoxels).
-    static std::uint64_t checkedVoxelCount(const osg::Vec3i& dims);
+    /// dims or counts are invalid or bytes.size() != total voxel count * voxel size.
+    void assign(VoxelType type, const osg::Vec3i& dims, std::vector<std::uint8_t>&& bytes, int channels = 1,
+                int frames = 1);
+    /// Voxel count of `blocks` blocks of `dims`, or an exception naming the problem
+    /// (non-positive, over maxVoxels in all).
+    static std::uint64_t checkedVoxelCount(const osg::Vec3i& dims, std::uint64_t blocks = 1);
 
     VoxelType type() const { return _type; }          ///< stored voxel type
     const osg::Vec3i& dims() const { return _dims; }  ///< voxels along x, y, z
-    std::size_t voxelCount() const;                    ///< dims.x * dims.y * dims.z
-    std::size_t byteSize() const { return _data.size(); }  ///< bytes of voxel storage
-    const std::uint8_t* data() const { return _data.data(); }  ///< raw stored voxels
+    std::size_t voxelCount() const;                    ///< dims.x * dims.y * dims.z (one block)
+    int channels() const { return _channels; }         ///< channels per time point (>= 1)
+    int frames() const { return _frames; }             ///< time points (>= 1)
+    std::size_t totalVoxelCount() const { return voxelCount() * std::size_t(_channels) * std::size_t(_frames); }
+    std::size_t byteSize() const { return _data.size(); }  ///< bytes of voxel storage (all blocks)
+    const std::uint8_t* data() const { return _data.data(); }  ///< raw stored voxels of block (0, 0)
     std::uint8_t* data() { return _data.data(); }  ///< writable voxels; call dirty() after writing
+    /// Raw stored voxels of channel `channel` at time point `frame`; throws std::out_of_range.
+    const std::uint8_t* block(int channel, int frame = 0) const;
+    std::uint8_t* block(int channel, int frame = 0);  ///< writable block; call dirty() after writing
 
     /// World size of one voxel along x, y, z (positive, finite).
     const osg::Vec3d& spacing() const { return _spacing; }
@@ -55,14 +67,14 @@ public:
     double rescaleSlope() const { return _slope; }          ///< data = stored*slope + intercept
     double rescaleIntercept() const { return _intercept; }  ///< data = stored*slope + intercept
 
-    /// Stored value of voxel index `i` (no rescale).
+    /// Stored value of voxel index `i` over all blocks (no rescale).
     double storedValue(std::size_t i) const;
     /// Data value of voxel index `i` (after rescale).
     double value(std::size_t i) const { return storedValue(i) * _slope + _intercept; }
     /// Data value at voxel (x,y,z).
     double value(int x, int y, int z) const;
 
-    /// Smallest and largest finite data values (NaN and Inf voxels are ignored).
+    /// Smallest and largest finite data values of all blocks (NaN and Inf voxels are ignored).
     std::pair<double, double> valueRange() const;
     /// Number of NaN or Inf voxels.
     std::uint64_t nonFiniteCount() const;
@@ -82,6 +94,7 @@ private:
 
     VoxelType _type = VoxelType::UInt8;
     osg::Vec3i _dims{0, 0, 0};
+    int _channels = 1, _frames = 1;
     osg::Vec3d _spacing{1.0, 1.0, 1.0};
     double _slope = 1.0;
     double _intercept = 0.0;
