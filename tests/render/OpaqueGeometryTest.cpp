@@ -125,5 +125,53 @@ TEST_F(OpaqueGeometry, ClipRayForcedNullDrawsTheVolumeOverTheGeometry)
     EXPECT_NEAR(img.at(20, 20).r(), transmittance(n), 2e-4);
 }
 
+TEST_F(OpaqueGeometry, IsosurfaceHidesThePartOfAPlaneBehindItAndLeavesItsDepth)
+{
+    const int size = 32;
+    const double radius = 10.0;
+    osg::ref_ptr<Volume> volume = new Volume;
+    volume->allocate(VoxelType::Float32, {size, size, size});
+    auto* v = reinterpret_cast<float*>(volume->data());
+    for (int k = 0; k < size; ++k)
+        for (int j = 0; j < size; ++j)
+            for (int i = 0; i < size; ++i) {
+                const double x = i + 0.5 - size / 2.0, y = j + 0.5 - size / 2.0, z = k + 0.5 - size / 2.0;
+                v[i + size * (j + size * k)] = float(radius - std::sqrt(x * x + y * y + z * z));
+            }
+    volume->dirty();
+    osg::ref_ptr<VolumeNode> node = volumeNode(volume.get(), constantTransferFunction(osg::Vec4(1, 0, 0, 1), -20, 20).get());
+    node->settings.functions["RayTraversal"] = "isosurface";
+    node->settings.isoValue = 0.0;
+    osg::ref_ptr<VolumeScene> scene = new VolumeScene;
+    scene->addChild(node.get());
+    scene->addChild(flatSquare({0, 0, 0}, 15.0f, osg::Vec4(0, 0, 1, 1)).get());  // through the centre
+
+    renderer(size, size).setReadDepth(true);
+    const double eyeZ = 100.0, nearPlane = 50.0, farPlane = 150.0;
+    const osg::Matrixd view = osg::Matrixd::lookAt(osg::Vec3d(0, 0, eyeZ), osg::Vec3d(), osg::Vec3d(0, 1, 0));
+    const Pixels img = render(scene.get(), size, size, view, osg::Matrixd::ortho(-16, 16, -16, 16, nearPlane, farPlane));
+    renderer(size, size).setReadDepth(false);
+    int front = 0, plane = 0;
+    for (int py = 0; py < size; ++py)
+        for (int px = 0; px < size; ++px) {
+            const double x = px + 0.5 - 16, y = py + 0.5 - 16, r = std::sqrt(x * x + y * y);
+            const osg::Vec4& c = img.at(px, py);
+            const float depth = img.depth[std::size_t(py) * size + px];
+            if (r < radius - 1) {  // the sphere's front half covers the plane
+                EXPECT_EQ(c.b(), 0.0f) << "plane shows through the isosurface at " << px << "," << py;
+                EXPECT_GT(c.r(), 0.0f);
+                const double surfaceZ = std::sqrt(radius * radius - r * r);
+                EXPECT_NEAR(depth, (eyeZ - surfaceZ - nearPlane) / (farPlane - nearPlane), 0.5 / (farPlane - nearPlane));
+                ++front;
+            } else if (r > radius + 1 && std::abs(x) < 15 && std::abs(y) < 15) {  // the plane beside it
+                EXPECT_EQ(c, osg::Vec4(0, 0, 1, 1)) << px << "," << py;
+                EXPECT_NEAR(depth, (eyeZ - nearPlane) / (farPlane - nearPlane), 1e-6);
+                ++plane;
+            }
+        }
+    EXPECT_GT(front, 200);
+    EXPECT_GT(plane, 200);
+}
+
 }  // namespace
 }  // namespace volren::test

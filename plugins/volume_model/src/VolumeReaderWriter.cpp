@@ -1,0 +1,41 @@
+#include <volume_model/DefaultScene.h>
+#include <volume_model/ReadVolume.h>
+#include <volume_model/VolumeReaderWriter.h>
+
+#include <osgDB/FileUtils>
+
+#include <exception>
+
+namespace volren {
+
+bool VolumeReaderWriter::handles(const std::string& file) const
+{
+    return acceptsExtension(volumeFileExtension(file));
+}
+
+osgDB::ReaderWriter::ReadResult VolumeReaderWriter::readObject(const std::string& file, const Options* options) const
+{
+    if (!handles(file)) return ReadResult::FILE_NOT_HANDLED;
+    const std::string path = osgDB::findDataFile(file, options);
+    if (path.empty()) return ReadResult(file + ": no such file");
+    try {
+        return readVolume(path, options);
+    } catch (const std::exception& e) {
+        const std::string what = e.what();
+        return ReadResult(what.find(path) != std::string::npos ? what : path + ": " + what);
+    }
+}
+
+osgDB::ReaderWriter::ReadResult VolumeReaderWriter::readNode(const std::string& file, const Options* options) const
+{
+    return asScene(readObject(file, options));
+}
+
+osgDB::ReaderWriter::ReadResult VolumeReaderWriter::asScene(ReadResult result)
+{
+    auto* volume = dynamic_cast<Volume*>(result.getObject());
+    if (!volume) return result;
+    return ReadResult(makeDefaultScene(volume).get());
+}
+
+}  // namespace volren
