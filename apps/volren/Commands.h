@@ -1,4 +1,6 @@
 #pragma once
+#include <volume_model/Volume.h>
+
 #include <string>
 #include <vector>
 
@@ -8,6 +10,11 @@ namespace volren::app {
 int renderCommand(const std::vector<std::string>& args, bool defaultRun);
 /// `volren info VOLUMEFILE`; returns the exit code.
 int infoCommand(const std::vector<std::string>& args);
+/// `volren convert IN OUT [--encoding raw|gzip]`: reads any volume file, writes it through
+/// osgDB (e.g. the NRRD writer); returns the exit code.
+int convertCommand(const std::vector<std::string>& args);
+/// Reads a volume file, drawing a one-line progress bar on stderr once the load takes over 0.5 s.
+osg::ref_ptr<Volume> readVolumeWithProgress(const std::string& path);
 /// `volren view [INPUT]`: an interactive window; returns the exit code.
 int viewCommand(const std::vector<std::string>& args);
 /// `volren shader [INPUT] [--set ...]`: prints each volume's composed ray caster and key.

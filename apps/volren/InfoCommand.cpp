@@ -13,7 +13,7 @@ namespace volren::app {
 int infoCommand(const std::vector<std::string>& args)
 {
     if (args.size() != 1) throw UsageError("info takes exactly one volume file");
-    osg::ref_ptr<Volume> v = readVolumeFile(args[0]);
+    osg::ref_ptr<Volume> v = readVolumeWithProgress(args[0]);
     const osg::Vec3i& d = v->dims();
     const osg::Vec3d& s = v->spacing();
     const auto [lo, hi] = v->valueRange();

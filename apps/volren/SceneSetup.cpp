@@ -1,4 +1,5 @@
 #include "SceneSetup.h"
+#include "Commands.h"
 
 #include <volume_model/DefaultScene.h>
 #include <volume_model/ReadVolume.h>
@@ -50,7 +51,7 @@ osg::ref_ptr<VolumeScene> loadScene(const RenderOptions& options)
     const std::string input = options.input.empty() ? defaultInput() : options.input;
     osg::ref_ptr<osg::Node> scene;
     if (isVolumeFile(input)) {
-        scene = makeDefaultScene(readVolumeFile(input).get());
+        scene = makeDefaultScene(readVolumeWithProgress(input).get());
     } else {
         if (!osgDB::fileExists(input)) throw std::runtime_error(input + ": no such file");
         osgDB::ReaderWriter::ReadResult result = osgDB::Registry::instance()->readNode(input, nullptr);

@@ -16,6 +16,7 @@ const char* const usage =
     "                [--fov DEG | --ortho HEIGHT] [--tf FILE.tf] [--background r,g,b]\n"
     "                [--set KEY=VALUE ...] [--frames N] [--stats FILE.json]\n"
     "  volren info VOLUMEFILE          dims, type, spacing, value range, histogram\n"
+    "  volren convert IN OUT [--encoding raw|gzip]   read any volume file, write e.g. OUT.nrrd\n"
     "  volren view [INPUT] [options]   interactive window (needs a display)\n"
     "  volren shader [INPUT] [--set KEY=VALUE ...]   print each volume's composed ray caster\n"
     "  volren permutations [--list] [--compile | --render] [--pairwise] [--max-instances N]\n"
@@ -44,6 +45,7 @@ int main(int argc, char** argv)
         if (command == "permutations") return volren::app::permutationsCommand(args);
         if (command == "render") return volren::app::renderCommand(args, false);
         if (command == "info") return volren::app::infoCommand(args);
+        if (command == "convert") return volren::app::convertCommand(args);
         if (command == "view") return volren::app::viewCommand(args);
         if (command == "-h" || command == "--help" || command == "help") {
             std::cout << usage;

@@ -1,11 +1,14 @@
 // The `volren` program's contract: commands, outputs, statistics and errors with exit codes.
 #include "TestData.h"
 
+#include <volume_model/ReadVolume.h>
+
 #include <OpenImageIO/imageio.h>
 #include <nlohmann/json.hpp>
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sys/wait.h>
@@ -168,6 +171,35 @@ TEST(VolrenCli, HelpSettingsListsEveryKeyAndImplementation)
     for (const char* text : {"samplerate", "earlyTermination", "lighting", "traversal", "isoValue",
                              "RayTraversal    (traversal): dvr_front_to_back", "cook_torrance", "central9", "tricubic"})
         EXPECT_NE(run.output.find(text), std::string::npos) << text;
+}
+
+TEST(VolrenCli, ConvertWritesNrrdThatReadsBackIdentically)
+{
+    VOLREN_REQUIRE_SHARED_DATA();
+    const std::string dir = tempDirectory();
+    const std::string input = sharedData("mri/HeadMRVolume.mhd");
+    CliRun run = volren("convert '" + input + "' '" + dir + "/head.nrrd'");
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    EXPECT_NE(run.output.find("48 x 62 x 42 uint8, 1 channel"), std::string::npos) << run.output;
+    const osg::ref_ptr<Volume> original = readVolumeFile(input);
+    const osg::ref_ptr<Volume> converted = readVolumeFile(dir + "/head.nrrd");
+    ASSERT_EQ(converted->dims(), original->dims());
+    EXPECT_EQ(converted->type(), original->type());
+    EXPECT_EQ(converted->spacing(), original->spacing());
+    ASSERT_EQ(converted->byteSize(), original->byteSize());
+    EXPECT_EQ(std::memcmp(converted->data(), original->data(), original->byteSize()), 0);
+
+    run = volren("convert '" + input + "'");
+    EXPECT_EQ(run.exitCode, 2) << run.output;
+    run = volren("convert '" + input + "' '" + dir + "/noextension'");
+    EXPECT_EQ(run.exitCode, 2) << run.output;
+    EXPECT_NE(run.output.find("needs an extension"), std::string::npos) << run.output;
+    run = volren("convert '" + dir + "/missing.nii' '" + dir + "/x.nrrd'");
+    EXPECT_EQ(run.exitCode, 1) << run.output;
+    EXPECT_NE(run.output.find(dir + "/missing.nii: no such file"), std::string::npos) << run.output;
+    run = volren("convert '" + input + "' '" + dir + "/x.unknownformat'");
+    EXPECT_EQ(run.exitCode, 1) << run.output;
+    EXPECT_NE(run.output.find(dir + "/x.unknownformat"), std::string::npos) << run.output;
 }
 
 TEST(VolrenCli, BadArgumentsExitWithUsageErrors)

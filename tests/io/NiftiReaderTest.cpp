@@ -77,16 +77,6 @@ struct NiftiBuilder
     }
 };
 
-std::string expectReadError(const std::string& path)
-{
-    try {
-        readVolumeFile(path);
-    } catch (const std::runtime_error& e) {
-        return e.what();
-    }
-    ADD_FAILURE() << "expected " << path << " to be rejected";
-    return {};
-}
 
 TEST(NiftiReader, ReadsColin27HeadAsInTheManifest)
 {

@@ -1,5 +1,7 @@
 #include "TestData.h"
 
+#include <volume_model/ReadVolume.h>
+
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -54,6 +56,17 @@ osg::ref_ptr<Volume> constantVolume(VoxelType type, const osg::Vec3i& dims, doub
     }
     v->dirty();
     return v;
+}
+
+std::string expectReadError(const std::string& path, const osgDB::Options* options)
+{
+    try {
+        readVolumeFile(path, options);
+    } catch (const std::runtime_error& e) {
+        return e.what();
+    }
+    ADD_FAILURE() << "expected " << path << " to be rejected";
+    return {};
 }
 
 osg::ref_ptr<TransferFunction> constantTransferFunction(const osg::Vec4& rgba, double lo, double hi)

@@ -1,4 +1,5 @@
 #pragma once
+#include <osgDB/Options>
 #include <volume_model/TransferFunction.h>
 #include <volume_model/Volume.h>
 
@@ -23,6 +24,9 @@ std::string tempDirectory();
 /// A volume of `dims` whose every voxel stores `value`.
 osg::ref_ptr<Volume> constantVolume(VoxelType type, const osg::Vec3i& dims, double value,
                                     const osg::Vec3d& spacing = {1.0, 1.0, 1.0});
+
+/// The message of readVolumeFile's error for `path`; a test failure when it reads fine.
+std::string expectReadError(const std::string& path, const osgDB::Options* options = nullptr);
 
 /// A TF with the same colour and opacity everywhere on [lo, hi].
 osg::ref_ptr<TransferFunction> constantTransferFunction(const osg::Vec4& rgba, double lo = 0.0, double hi = 255.0);

@@ -22,7 +22,20 @@ std::string libraryDirectory()
     return {};
 }
 
-const char* const volumeExtensions[] = {"nii"};
+const char* const volumeExtensions[] = {"nii", "nrrd", "nhdr", "mhd", "mha", "raw", "dat", "tif", "tiff",
+                                       "imgstack", "dcm", "dic", "dicom", "pvm"};
+
+/// The reader for a directory: numbered TIFF slices, other 2D images, else a DICOM series.
+std::string directoryReader(const std::string& dir)
+{
+    bool images = false;
+    for (const std::string& name : osgDB::getDirectoryContents(dir)) {
+        const std::string ext = osgDB::getLowerCaseFileExtension(name);
+        if (ext == "tif" || ext == "tiff") return "tiff";
+        if (ext == "png" || ext == "jpg" || ext == "jpeg" || ext == "bmp" || ext == "exr" || ext == "pgm") images = true;
+    }
+    return images ? "imgstack" : "dicom";
+}
 
 }  // namespace
 
@@ -52,6 +65,7 @@ std::string volumeFileExtension(const std::string& path)
 
 bool isVolumeFile(const std::string& path)
 {
+    if (osgDB::fileType(path) == osgDB::DIRECTORY) return true;  // slices: TIFF, images or DICOM
     const std::string ext = volumeFileExtension(path);
     for (const char* known : volumeExtensions)
         if (ext == known) return true;
@@ -61,11 +75,19 @@ bool isVolumeFile(const std::string& path)
 osg::ref_ptr<Volume> readVolumeFile(const std::string& path, const osgDB::Options* options)
 {
     registerPluginPath();
-    if (!osgDB::fileExists(path)) throw std::runtime_error(path + ": no such file");
-    if (osgDB::fileType(path) == osgDB::DIRECTORY) throw std::runtime_error(path + ": is a directory, not a volume file");
-    const std::string ext = volumeFileExtension(path);
+    // Numbered TIFF slices may be named by a pattern ("slices/s*.tif"): the reader expands it.
+    const bool pattern = path.find_first_of("*?") != std::string::npos;
+    if (!pattern && !osgDB::fileExists(path)) throw std::runtime_error(path + ": no such file");
+    // A directory holds slices: TIFF, other 2D images, or a DICOM series.
+    const bool isDirectory = !pattern && osgDB::fileType(path) == osgDB::DIRECTORY;
+    if (isDirectory && volumeFileExtension(path) != "dicom" && !osgDB::getLowerCaseFileExtension(path).empty())
+        throw std::runtime_error(path + ": is a directory, not a volume file");
+    const std::string ext = isDirectory ? directoryReader(path) : volumeFileExtension(path);
     osgDB::ReaderWriter* rw = osgDB::Registry::instance()->getReaderWriterForExtension(ext);
     if (!rw) throw std::runtime_error(path + ": no volume reader for extension '" + ext + "'");
+    if (std::string(rw->className()).rfind("volren", 0) != 0)  // e.g. OSG's own 2D osgdb_tiff, loaded first
+        throw std::runtime_error(path + ": OSG's '" + rw->className() + "' plugin was loaded for '." + ext +
+                                 "' before volren's; put volren's plugin folder first on OSG_LIBRARY_PATH");
     osgDB::ReaderWriter::ReadResult result = rw->readObject(path, options);
     if (!result.success()) {
         std::string why = result.message();

@@ -13,11 +13,15 @@ bool VolumeReaderWriter::handles(const std::string& file) const
     return acceptsExtension(volumeFileExtension(file));
 }
 
+std::string VolumeReaderWriter::locate(const std::string& file, const Options* options) const
+{
+    return handles(file) ? osgDB::findDataFile(file, options) : std::string();
+}
+
 osgDB::ReaderWriter::ReadResult VolumeReaderWriter::readObject(const std::string& file, const Options* options) const
 {
-    if (!handles(file)) return ReadResult::FILE_NOT_HANDLED;
-    const std::string path = osgDB::findDataFile(file, options);
-    if (path.empty()) return ReadResult(file + ": no such file");
+    const std::string path = locate(file, options);
+    if (path.empty()) return handles(file) ? ReadResult(file + ": no such file") : ReadResult(ReadResult::FILE_NOT_HANDLED);
     try {
         return readVolume(path, options);
     } catch (const std::exception& e) {

@@ -1,41 +1,25 @@
 #include "NiftiReader.h"
+#include "NiftiHeader.h"
+#include "NiftiOrientation.h"
 
 #include <osg/Notify>
+#include <osg/ValueObject>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <stdexcept>
 
 namespace volren::nifti {
 
 namespace {
 
-constexpr std::size_t headerSize = 348;
-
-/// NIfTI-1 datatype codes (nifti1.h).
+/// NIfTI datatype codes (nifti1.h, nifti2.h).
 enum DataType : int {
     DT_UINT8 = 2, DT_INT16 = 4, DT_INT32 = 8, DT_FLOAT32 = 16, DT_FLOAT64 = 64,
     DT_INT8 = 256, DT_UINT16 = 512, DT_UINT32 = 768, DT_INT64 = 1024, DT_UINT64 = 1280,
-};
-
-struct Header
-{
-    const std::uint8_t* bytes;
-    bool swap;
-
-    template <typename T>
-    T get(std::size_t offset) const
-    {
-        T v;
-        std::memcpy(&v, bytes + offset, sizeof(T));
-        if (swap) {
-            auto* p = reinterpret_cast<std::uint8_t*>(&v);
-            std::reverse(p, p + sizeof(T));
-        }
-        return v;
-    }
 };
 
 void swapInPlace(std::uint8_t* data, std::size_t count, std::size_t width)
@@ -62,23 +46,6 @@ std::string dataTypeName(int code)
     }
 }
 
-/// Reads exactly `size` bytes or throws with a truncation message.
-void readExactly(const ByteSource& source, void* dst, std::size_t size, const std::string& name, const char* what)
-{
-    std::size_t done = 0;
-    auto* out = static_cast<std::uint8_t*>(dst);
-    while (done < size) {
-        const std::size_t chunk = std::min<std::size_t>(size - done, std::size_t(1) << 30);
-        std::string error;
-        const long long got = source(out + done, chunk, error);
-        if (got < 0) throw std::runtime_error(name + ": " + what + ": " + error);
-        if (got == 0)
-            throw std::runtime_error(name + ": truncated: " + what + " needs " + std::to_string(size) +
-                                     " bytes, file ends after " + std::to_string(done));
-        done += std::size_t(got);
-    }
-}
-
 template <typename T>
 void widenToFloat(const std::vector<std::uint8_t>& in, std::vector<std::uint8_t>& out, std::size_t count)
 {
@@ -93,41 +60,18 @@ void widenToFloat(const std::vector<std::uint8_t>& in, std::vector<std::uint8_t>
 
 }  // namespace
 
-osg::ref_ptr<Volume> readNifti1(const ByteSource& source, const std::string& name)
+osg::ref_ptr<Volume> readNifti(const ByteSource& source, const std::string& name)
 {
-    std::uint8_t raw[headerSize];
-    readExactly(source, raw, headerSize, name, "NIfTI header");
+    const NiftiHeader h = readNiftiHeader(source, name);
+    const std::int64_t rank = h.dim[0];
+    for (int i = 1; i <= 3; ++i)
+        if (h.dim[i] > std::numeric_limits<int>::max())
+            throw std::runtime_error(name + ": dim[" + std::to_string(i) + "] = " + std::to_string(h.dim[i]) +
+                                     " is too large");
+    double volumes = 1;
+    for (int i = 4; i <= rank; ++i) volumes *= double(h.dim[i]);
 
-    Header h{raw, false};
-    const std::int32_t sizeofHdr = h.get<std::int32_t>(0);
-    if (sizeofHdr != 348) {
-        h.swap = true;
-        if (h.get<std::int32_t>(0) != 348) {
-            if (sizeofHdr == 540 || h.get<std::int32_t>(0) == 540)
-                throw std::runtime_error(name + ": NIfTI-2 files are not supported yet (only NIfTI-1)");
-            throw std::runtime_error(name + ": not a NIfTI-1 file (sizeof_hdr is " + std::to_string(sizeofHdr) +
-                                     ", expected 348)");
-        }
-    }
-    const char* magic = reinterpret_cast<const char*>(raw + 344);
-    if (std::memcmp(magic, "ni1\0", 4) == 0)
-        throw std::runtime_error(name + ": two-file NIfTI (.hdr/.img pair) is not supported; use a single .nii");
-    if (std::memcmp(magic, "n+1\0", 4) != 0) throw std::runtime_error(name + ": bad NIfTI-1 magic (expected 'n+1')");
-
-    // Dimensions: dim[0] is the rank; missing spatial axes count as 1.
-    const int rank = h.get<std::int16_t>(40);
-    if (rank < 1 || rank > 7) throw std::runtime_error(name + ": invalid dim[0] = " + std::to_string(rank) + " (must be 1..7)");
-    int dim[8] = {rank, 1, 1, 1, 1, 1, 1, 1};
-    for (int i = 1; i <= rank; ++i) {
-        dim[i] = h.get<std::int16_t>(40 + 2 * i);
-        if (dim[i] <= 0)
-            throw std::runtime_error(name + ": dim[" + std::to_string(i) + "] = " + std::to_string(dim[i]) +
-                                     " is not positive");
-    }
-    std::uint64_t volumes = 1;
-    for (int i = 4; i <= rank; ++i) volumes *= std::uint64_t(dim[i]);
-
-    const int datatype = h.get<std::int16_t>(70);
+    const int datatype = h.datatype;
     VoxelType stored;
     std::size_t fileVoxelSize = 0;
     switch (datatype) {
@@ -143,7 +87,7 @@ osg::ref_ptr<Volume> readNifti1(const ByteSource& source, const std::string& nam
 
     osg::Vec3d spacing;
     for (int a = 0; a < 3; ++a) {
-        const double p = std::fabs(double(h.get<float>(76 + 4 * (a + 1))));
+        const double p = std::fabs(h.pixdim[a + 1]);
         if (!(p > 0.0) || !std::isfinite(p)) {
             OSG_WARN << name << ": pixdim[" << a + 1 << "] = " << p << " is not a positive spacing; using 1" << std::endl;
             spacing[a] = 1.0;
@@ -152,15 +96,15 @@ osg::ref_ptr<Volume> readNifti1(const ByteSource& source, const std::string& nam
         }
     }
 
-    const double voxOffset = h.get<float>(108);
-    if (!(voxOffset >= double(headerSize)) || voxOffset > double(1u << 30) || voxOffset != std::floor(voxOffset))
+    const double voxOffset = h.voxOffset;
+    if (!(voxOffset >= double(h.size)) || voxOffset > double(1u << 30) || voxOffset != std::floor(voxOffset))
         throw std::runtime_error(name + ": invalid vox_offset " + std::to_string(voxOffset));
 
-    double slope = h.get<float>(112), intercept = h.get<float>(116);
+    double slope = h.slope, intercept = h.intercept;
     if (!std::isfinite(slope) || slope == 0.0) slope = 1.0, intercept = 0.0;  // spec: 0 means unscaled
     if (!std::isfinite(intercept)) intercept = 0.0;
 
-    const osg::Vec3i dims(dim[1], dim[2], dim[3]);
+    const osg::Vec3i dims(int(h.dim[1]), int(h.dim[2]), int(h.dim[3]));
     std::uint64_t count = 0;
     try {
         count = Volume::checkedVoxelCount(dims);
@@ -171,7 +115,7 @@ osg::ref_ptr<Volume> readNifti1(const ByteSource& source, const std::string& nam
         OSG_WARN << name << ": file holds " << volumes << " volumes (dims 4..7); volren reads the first" << std::endl;
 
     // Skip extensions between the header and the voxels.
-    std::size_t skip = std::size_t(voxOffset) - headerSize;
+    std::size_t skip = std::size_t(voxOffset) - h.size;
     std::vector<std::uint8_t> scratch(std::min<std::size_t>(skip, 1 << 16));
     while (skip > 0) {
         const std::size_t n = std::min(skip, scratch.size());
@@ -186,7 +130,7 @@ osg::ref_ptr<Volume> readNifti1(const ByteSource& source, const std::string& nam
         throw std::runtime_error(name + ": not enough memory for " + std::to_string(count) + " voxels");
     }
     readExactly(source, bytes.data(), bytes.size(), name, "voxel data");
-    if (h.swap && fileVoxelSize > 1) swapInPlace(bytes.data(), std::size_t(count), fileVoxelSize);
+    if (h.swapped && fileVoxelSize > 1) swapInPlace(bytes.data(), std::size_t(count), fileVoxelSize);
 
     if (stored == VoxelType::Float32 && datatype != DT_FLOAT32) {
         std::vector<std::uint8_t> widened;
@@ -208,6 +152,9 @@ osg::ref_ptr<Volume> readNifti1(const ByteSource& source, const std::string& nam
     volume->setRescale(slope, intercept);
     volume->sourceFile = name;
     volume->setName(name);
+    std::string orientationSource;
+    volume->setUserValue(voxelToWorldKey, voxelToWorld(h, orientationSource));
+    volume->setUserValue(voxelToWorldSourceKey, orientationSource);
     if (const auto bad = volume->nonFiniteCount())
         OSG_WARN << name << ": " << bad << " NaN/Inf voxels; they are treated as empty" << std::endl;
     return volume;

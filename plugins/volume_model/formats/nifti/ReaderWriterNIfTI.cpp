@@ -1,4 +1,4 @@
-// osgDB plugin for NIfTI-1 volumes (.nii, .nii.gz): readObject gives a volren::Volume,
+// osgDB plugin for NIfTI-1 and NIfTI-2 volumes (.nii, .nii.gz): readObject gives a volren::Volume,
 // readNode the default scene for it.
 #include "NiftiReader.h"
 
@@ -18,9 +18,9 @@ namespace {
 class ReaderWriterNIfTI : public osgDB::ReaderWriter
 {
 public:
-    ReaderWriterNIfTI() { supportsExtension("nii", "NIfTI-1 volume (also .nii.gz)"); }
+    ReaderWriterNIfTI() { supportsExtension("nii", "NIfTI-1 or NIfTI-2 volume (also .nii.gz)"); }
 
-    const char* className() const override { return "volren NIfTI-1 reader"; }
+    const char* className() const override { return "volren NIfTI-1/2 reader"; }
 
     ReadResult readObject(const std::string& file, const Options* options) const override
     {
@@ -75,7 +75,7 @@ private:
             return got;
         };
         try {
-            osg::ref_ptr<volren::Volume> volume = volren::nifti::readNifti1(source, path);
+            osg::ref_ptr<volren::Volume> volume = volren::nifti::readNifti(source, path);
             gzclose(gz);
             return ReadResult(volume.get());
         } catch (const std::exception& e) {
@@ -96,7 +96,7 @@ private:
             return in.gcount();
         };
         try {
-            return ReadResult(volren::nifti::readNifti1(source, "NIfTI stream").get());
+            return ReadResult(volren::nifti::readNifti(source, "NIfTI stream").get());
         } catch (const std::exception& e) {
             return ReadResult(e.what());
         }

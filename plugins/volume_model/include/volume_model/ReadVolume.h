@@ -14,7 +14,8 @@ osg::ref_ptr<Volume> readVolumeFile(const std::string& path, const osgDB::Option
 /// Extension that selects the reader: lower case, with a trailing `.gz` looked through.
 std::string volumeFileExtension(const std::string& path);
 
-/// Whether a volren volume reader is registered for `path`'s extension.
+/// Whether a volren volume reader is registered for `path`'s extension, or `path` is a
+/// directory (of TIFF, 2D image or DICOM slices).
 bool isVolumeFile(const std::string& path);
 
 /// Adds the folder holding the volren osgDB plugins (next to this library) to OSG's

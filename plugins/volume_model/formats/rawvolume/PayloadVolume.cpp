@@ -1,0 +1,100 @@
+#include "PayloadVolume.h"
+
+#include <osg/Notify>
+
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+
+namespace volren::rawvolume {
+
+namespace {
+
+bool hostIsBigEndian()
+{
+    const std::uint16_t one = 1;
+    std::uint8_t first;
+    std::memcpy(&first, &one, 1);
+    return first == 0;
+}
+
+/// Int32/UInt32 → float32 in place (same width); refuses values that float32 would round.
+template <typename T>
+void integersToFloat(std::uint8_t* data, std::size_t count, const std::string& name, const char* typeName)
+{
+    constexpr double limit = 16777216.0;  // 2^24: every integer up to here is exact in float32
+    for (std::size_t i = 0; i < count; ++i) {
+        T v;
+        std::memcpy(&v, data + 4 * i, 4);
+        if (std::fabs(double(v)) > limit)
+            throw std::runtime_error(name + ": " + typeName + " value " + std::to_string(v) + " at voxel " + std::to_string(i) +
+                                     " does not fit float32 exactly (|v| > 2^24); volren keeps " + typeName +
+                                     " files as float32 only when every value fits");
+        const float f = float(v);
+        std::memcpy(data + 4 * i, &f, 4);
+    }
+}
+
+}  // namespace
+
+osg::ref_ptr<Volume> readPayloadVolume(const PayloadLayout& layout, const osgDB::Options* options)
+{
+    const std::string& name = layout.name;
+    for (int a = 0; a < 3; ++a)
+        if (!(layout.spacing[a] > 0.0) || !std::isfinite(layout.spacing[a]))
+            throw std::runtime_error(name + ": spacing " + std::to_string(layout.spacing[a]) + " along axis " +
+                                     std::to_string(a) + " is not positive and finite");
+    if (!std::isfinite(layout.slope) || layout.slope == 0.0 || !std::isfinite(layout.intercept))
+        throw std::runtime_error(name + ": value rescale must be finite with a non-zero slope");
+    if (layout.channels <= 0 || layout.frames <= 0)
+        throw std::runtime_error(name + ": channel count " + std::to_string(layout.channels) + " and time point count " +
+                                 std::to_string(layout.frames) + " must be positive");
+    std::uint64_t count = 0;
+    try {
+        count = Volume::checkedVoxelCount(layout.dims, std::uint64_t(layout.channels) * std::uint64_t(layout.frames));
+    } catch (const std::exception& e) {
+        throw std::runtime_error(name + ": " + e.what());
+    }
+    const std::size_t width = fileVoxelSize(layout.type);
+    const std::uint64_t bytes = count * width;
+
+    std::vector<std::uint8_t> voxels;
+    try {
+        voxels.resize(std::size_t(bytes));
+    } catch (const std::bad_alloc&) {
+        throw std::runtime_error(name + ": not enough memory for " + std::to_string(count) + " voxels");
+    }
+    readPayload(layout.parts, voxels.data(), bytes, name, options);
+    if (layout.bigEndian != hostIsBigEndian()) swapBytes(voxels.data(), std::size_t(count), width);
+    if (layout.type == FileVoxelType::Int32) integersToFloat<std::int32_t>(voxels.data(), std::size_t(count), name, "int32");
+    if (layout.type == FileVoxelType::UInt32) integersToFloat<std::uint32_t>(voxels.data(), std::size_t(count), name, "uint32");
+
+    if (layout.channels > 1) {
+        // The file interleaves channels per voxel; the Volume keeps one block per channel.
+        std::vector<std::uint8_t> planar(voxels.size());
+        const std::size_t n = std::size_t(count) / std::size_t(layout.channels) / std::size_t(layout.frames);
+        const std::size_t c = std::size_t(layout.channels);
+        for (std::size_t t = 0; t < std::size_t(layout.frames); ++t)
+            for (std::size_t ch = 0; ch < c; ++ch) {
+                std::uint8_t* out = planar.data() + ((t * c + ch) * n) * width;
+                const std::uint8_t* in = voxels.data() + (t * n * c + ch) * width;
+                for (std::size_t v = 0; v < n; ++v) std::memcpy(out + v * width, in + v * c * width, width);
+            }
+        voxels.swap(planar);
+    }
+
+    osg::ref_ptr<Volume> volume = new Volume;
+    volume->assign(volumeVoxelType(layout.type), layout.dims, std::move(voxels), layout.channels, layout.frames);
+    volume->setSpacing(layout.spacing);
+    volume->setRescale(layout.slope, layout.intercept);
+    volume->sourceFile = name;
+    volume->setName(name);
+    if (layout.type == FileVoxelType::Int32 || layout.type == FileVoxelType::UInt32)
+        OSG_NOTICE << name << ": " << fileVoxelTypeName(layout.type) << " voxels stored as float32 (all values exact)" << std::endl;
+    if (layout.type == FileVoxelType::Float32)
+        if (const auto bad = volume->nonFiniteCount())
+            OSG_WARN << name << ": " << bad << " NaN/Inf voxels; they are treated as empty" << std::endl;
+    return volume;
+}
+
+}  // namespace volren::rawvolume

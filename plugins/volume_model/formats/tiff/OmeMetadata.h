@@ -1,0 +1,29 @@
+#pragma once
+#include "StackLayout.h"
+
+#include <optional>
+#include <string>
+
+namespace volren::tiff {
+
+/// The first image's <Pixels> element of an OME-XML ImageDescription.
+struct OmeMetadata
+{
+    std::size_t sizeX = 0, sizeY = 0, sizeZ = 1, sizeC = 1, sizeT = 1;  ///< OME sizes
+    std::string order = "ZCT";                                          ///< DimensionOrder without "XY"
+    std::optional<double> physicalX, physicalY, physicalZ;               ///< voxel size, when given
+    std::size_t images = 1;                                              ///< <Image> elements in the file
+};
+
+/// Whether `description` is OME-XML (holds an <OME> root element).
+bool isOmeDescription(const std::string& description);
+
+/// Parses the OME-XML `description`; throws std::runtime_error("name: reason") when the
+/// <Pixels> element is missing or its sizes or DimensionOrder are invalid.
+OmeMetadata parseOmeDescription(const std::string& description, const std::string& name);
+
+/// The page layout for `pages` pages of `samplesPerPixel` samples each (an RGB page holds
+/// three OME channels); throws std::runtime_error("name: reason") when it does not fit.
+StackLayout omeLayout(const OmeMetadata& meta, std::size_t pages, std::size_t samplesPerPixel, const std::string& name);
+
+}  // namespace volren::tiff
