@@ -17,6 +17,9 @@ packages=(
   mricron-data
 )
 
+# The fuzzers (tests/fuzz, optional) need clang and its libFuzzer runtime: VOLREN_SETUP_FUZZ=1.
+[ "${VOLREN_SETUP_FUZZ:-0}" = 1 ] && packages+=(clang libclang-rt-14-dev)
+
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -188,6 +188,29 @@ TEST(NiftiReader, TruncatedCopiesOfARealFileAreRejectedWithFileAndReason)
     EXPECT_NE(why.find("truncated: NIfTI header"), std::string::npos) << why;
 }
 
+TEST(NiftiReader, HeaderClaimingMoreVoxelsThanTheFileHoldsIsRefusedBeforeAllocating)
+{
+    // Found by fuzz_nii: 362 bytes whose header asks for 2048 x 2048 x 1024 uint8 voxels made the
+    // reader allocate 4 GiB before reading; now the file size (or, gzip-compressed, the most it
+    // can expand to) is checked first.
+    const std::string dir = tempDirectory();
+    NiftiBuilder liar;
+    liar.dim[1] = 2048, liar.dim[2] = 2048, liar.dim[3] = 1024;
+    liar.datatype = 2, liar.bitpix = 8;
+    liar.voxels.assign(10, 1);
+    const std::vector<char> bytes = liar.build();
+    writeAll(dir + "/liar.nii", bytes);
+    std::string why = expectReadError(dir + "/liar.nii");
+    EXPECT_NE(why.find(dir + "/liar.nii: truncated: voxel data needs 4294967296 bytes"), std::string::npos) << why;
+
+    gzFile gz = gzopen((dir + "/liar.nii.gz").c_str(), "wb");
+    ASSERT_TRUE(gz);
+    gzwrite(gz, bytes.data(), unsigned(bytes.size()));
+    gzclose(gz);
+    why = expectReadError(dir + "/liar.nii.gz");
+    EXPECT_NE(why.find(dir + "/liar.nii.gz: truncated: voxel data needs 4294967296 bytes"), std::string::npos) << why;
+}
+
 TEST(NiftiReader, CorruptHeadersAreRejectedWithTheReason)
 {
     const std::string dir = tempDirectory();

@@ -241,6 +241,17 @@ TEST(NrrdReader, FourDimensionalRgbBecomesChannelsAndSpacingComesFromDirections)
     }
 }
 
+TEST(NrrdReader, HeaderClaimingMoreThanTheFileHoldsIsRefusedBeforeAllocating)
+{
+    // Found by fuzz_nrrd: a 90-byte file whose sizes ask for 4 GiB of voxels was allocated for
+    // before the reader found out that the data were missing; now the file size comes first.
+    const std::string dir = tempDirectory();
+    writeFile(dir + "/liar.nrrd", "NRRD0004\ntype: uchar\ndimension: 3\nsizes: 2048 2048 1024\nencoding: raw\n\n0123456789");
+    const std::string why = expectReadError(dir + "/liar.nrrd");
+    EXPECT_NE(why.find(dir + "/liar.nrrd: truncated: data file " + dir +
+                       "/liar.nrrd holds 10 bytes of voxel data, the header needs 4294967296"), std::string::npos) << why;
+}
+
 TEST(NrrdReader, Int32BecomesExactFloatOrIsRefused)
 {
     const std::string dir = tempDirectory();

@@ -136,6 +136,21 @@ TEST(RawReader, TruncatedPayloadIsRejected)
     expectRejected(dir + "/short.raw", opts("dims=2,3,4 type=float32").get(), "truncated");
 }
 
+TEST(RawReader, HeaderClaimingMoreThanTheDataFileHoldsIsRefusedBeforeAllocating)
+{
+    // Found by fuzz_raw: a sidecar asking for 2048 x 2048 x 1024 voxels of a 10-byte file made
+    // the payload reader allocate 4 GiB first; now the data file size is checked before that
+    // (for gzip: the most deflate can expand it to).
+    const std::string dir = tempDirectory();
+    writeFile(dir + "/liar.raw", std::string(10, '\1'));
+    writeFile(dir + "/liar.raw.txt", "dims=2048,2048,1024 type=uint8\n");
+    expectRejected(dir + "/liar.raw", nullptr,
+                   "truncated: data file " + dir + "/liar.raw holds 10 bytes of voxel data, the header needs 4294967296");
+    writeFile(dir + "/liar.raw.txt", "dims=2048,2048,1024 type=uint8 encoding=gzip\n");
+    expectRejected(dir + "/liar.raw", nullptr, "truncated: 10 bytes of compressed data in " + dir +
+                                                   "/liar.raw cannot decode to the 4294967296 bytes the header needs");
+}
+
 TEST(RawReader, HeaderSizeMismatchIsRejected)
 {
     const std::string dir = tempDirectory();

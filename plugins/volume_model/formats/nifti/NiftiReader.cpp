@@ -60,7 +60,7 @@ void widenToFloat(const std::vector<std::uint8_t>& in, std::vector<std::uint8_t>
 
 }  // namespace
 
-osg::ref_ptr<Volume> readNifti(const ByteSource& source, const std::string& name)
+osg::ref_ptr<Volume> readNifti(const ByteSource& source, const std::string& name, std::uint64_t maxBytes)
 {
     const NiftiHeader h = readNiftiHeader(source, name);
     const std::int64_t rank = h.dim[0];
@@ -111,6 +111,12 @@ osg::ref_ptr<Volume> readNifti(const ByteSource& source, const std::string& name
     } catch (const std::exception& e) {
         throw std::runtime_error(name + ": " + e.what());
     }
+    // A few header bytes can claim gigabytes: check them against the source before allocating.
+    const std::uint64_t voxelBytes = count * fileVoxelSize;
+    if (voxelBytes > maxBytes || std::uint64_t(voxOffset) > maxBytes - voxelBytes)
+        throw std::runtime_error(name + ": truncated: voxel data needs " + std::to_string(voxelBytes) + " bytes from byte " +
+                                 std::to_string(std::uint64_t(voxOffset)) + ", the file can hold at most " +
+                                 std::to_string(maxBytes) + " bytes");
     if (volumes > 1)
         OSG_WARN << name << ": file holds " << volumes << " volumes (dims 4..7); volren reads the first" << std::endl;
 

@@ -10,6 +10,7 @@
 
 #include <zlib.h>
 
+#include <filesystem>
 #include <istream>
 #include <stdexcept>
 
@@ -51,6 +52,16 @@ private:
         return ReadResult(volren::makeDefaultScene(volume).get());
     }
 
+    /// Most bytes `gz` can deliver: the file size when it is not compressed, else what deflate's
+    /// best ratio (1032:1, with a margin) can expand the file to.
+    static std::uint64_t sizeBound(gzFile gz, const std::string& path)
+    {
+        std::error_code ec;
+        const std::uintmax_t size = std::filesystem::file_size(path, ec);
+        if (ec) return volren::nifti::unknownSize;
+        return gzdirect(gz) ? std::uint64_t(size) : std::uint64_t(size) * 1040 + 4096;
+    }
+
     /// Reads .nii and .nii.gz alike: zlib reads uncompressed files transparently.
     static ReadResult readVolume(const std::string& file, const Options* options)
     {
@@ -75,7 +86,7 @@ private:
             return got;
         };
         try {
-            osg::ref_ptr<volren::Volume> volume = volren::nifti::readNifti(source, path);
+            osg::ref_ptr<volren::Volume> volume = volren::nifti::readNifti(source, path, sizeBound(gz, path));
             gzclose(gz);
             return ReadResult(volume.get());
         } catch (const std::exception& e) {

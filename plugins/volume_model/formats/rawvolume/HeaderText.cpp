@@ -3,11 +3,13 @@
 #include <osgDB/FileNameUtils>
 #include <osgDB/FileUtils>
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <stdexcept>
 
@@ -19,8 +21,10 @@ std::string readFileHead(const std::string& path, std::size_t maxBytes)
     errno = 0;
     std::ifstream in(path, std::ios::binary);
     if (!in) throw std::runtime_error(path + ": cannot open for reading: " + std::strerror(errno));
-    std::string text(maxBytes, '\0');
-    in.read(&text[0], std::streamsize(maxBytes));
+    std::error_code ec;  // no buffer of maxBytes for a short file (headers are read per load)
+    const std::uintmax_t size = std::filesystem::file_size(path, ec);
+    std::string text(ec ? maxBytes : std::size_t(std::min<std::uintmax_t>(size, maxBytes)), '\0');
+    in.read(&text[0], std::streamsize(text.size()));
     if (in.bad()) throw std::runtime_error(path + ": read error");
     text.resize(std::size_t(in.gcount()));
     return text;

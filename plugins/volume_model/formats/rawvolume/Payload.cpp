@@ -163,7 +163,9 @@ void readCompressed(std::FILE* f, std::uint64_t fileSize, const PayloadPart& par
     }
 }
 
-void readPart(const PayloadPart& part, std::uint8_t* dst, std::uint64_t bytes, const std::string& name, Progress& progress)
+/// Opens the data file of `part` and gives its size; throws when it cannot be read or is
+/// shorter than the part's offset.
+File openPart(const PayloadPart& part, const std::string& name, std::uint64_t& fileSize)
 {
     if (osgDB::fileType(part.path) == osgDB::DIRECTORY) throw failure(name, "data file " + part.path + " is a directory");
     errno = 0;
@@ -175,10 +177,17 @@ void readPart(const PayloadPart& part, std::uint8_t* dst, std::uint64_t bytes, c
     if (fseeko(f.get(), 0, SEEK_END) != 0) throw failure(name, "cannot seek in data file " + part.path);
     const off_t size = ftello(f.get());
     if (size < 0) throw failure(name, "cannot size data file " + part.path + " (not a regular file?)");
-    const std::uint64_t fileSize = std::uint64_t(size);
+    fileSize = std::uint64_t(size);
     if (part.offset > fileSize)
         throw failure(name, "truncated: data file " + part.path + " has " + std::to_string(fileSize) +
                                 " bytes, data should start at byte " + std::to_string(part.offset));
+    return f;
+}
+
+void readPart(const PayloadPart& part, std::uint8_t* dst, std::uint64_t bytes, const std::string& name, Progress& progress)
+{
+    std::uint64_t fileSize = 0;
+    const File f = openPart(part, name, fileSize);
     if (fseeko(f.get(), off_t(part.offset), SEEK_SET) != 0) throw failure(name, "cannot seek in data file " + part.path);
     skipLines(f.get(), part.lineSkip, name, part.path);
     if (part.compression == Compression::None)
@@ -200,6 +209,28 @@ void readPayload(const std::vector<PayloadPart>& parts, std::uint8_t* dst, std::
     if (!reportLoadProgress(options, 0.0, double(bytes))) throw failure(name, "cancelled");
     const std::uint64_t share = bytes / parts.size();
     for (std::size_t i = 0; i < parts.size(); ++i) readPart(parts[i], dst + i * share, share, name, progress);
+}
+
+void checkPayloadFits(const std::vector<PayloadPart>& parts, std::uint64_t bytes, const std::string& name)
+{
+    if (parts.empty()) throw failure(name, "no data file");
+    const std::uint64_t share = bytes / parts.size();
+    for (const PayloadPart& part : parts) {
+        std::uint64_t fileSize = 0;
+        openPart(part, name, fileSize);
+        // Skipped lines and bytes only lower this; byte skip -1 takes the file's last bytes.
+        std::uint64_t available = part.byteSkip == -1 ? fileSize : fileSize - part.offset;
+        if (part.compression == Compression::Zlib) {
+            if (part.compressedSize) available = std::min(available, part.compressedSize);
+            constexpr std::uint64_t maxRatio = 1040;  // deflate expands at most 1032:1
+            if (available <= (std::uint64_t(-1) - 4096) / maxRatio && available * maxRatio + 4096 < share)
+                throw failure(name, "truncated: " + std::to_string(available) + " bytes of compressed data in " + part.path +
+                                        " cannot decode to the " + std::to_string(share) + " bytes the header needs");
+        } else if (available < share) {
+            throw failure(name, "truncated: data file " + part.path + " holds " + std::to_string(available) +
+                                    " bytes of voxel data, the header needs " + std::to_string(share));
+        }
+    }
 }
 
 void swapBytes(std::uint8_t* data, std::size_t count, std::size_t width)

@@ -29,6 +29,12 @@ struct PayloadPart
 void readPayload(const std::vector<PayloadPart>& parts, std::uint8_t* dst, std::uint64_t bytes,
                  const std::string& name, const osgDB::Options* options);
 
+/// Cheap check, before the voxel buffer is allocated, that `parts` can hold `bytes` voxel
+/// bytes: each data file must exist and hold its share from its offset (a compressed one at
+/// most deflate's 1032:1 expansion of it). Throws std::runtime_error("name: truncated: ...")
+/// otherwise, so that a small header claiming gigabytes fails without allocating them.
+void checkPayloadFits(const std::vector<PayloadPart>& parts, std::uint64_t bytes, const std::string& name);
+
 /// Reverses the byte order of `count` values of `width` bytes in place.
 void swapBytes(std::uint8_t* data, std::size_t count, std::size_t width);
 

@@ -58,6 +58,7 @@ osg::ref_ptr<Volume> readPayloadVolume(const PayloadLayout& layout, const osgDB:
     const std::size_t width = fileVoxelSize(layout.type);
     const std::uint64_t bytes = count * width;
 
+    checkPayloadFits(layout.parts, bytes, name);
     std::vector<std::uint8_t> voxels;
     try {
         voxels.resize(std::size_t(bytes));
