@@ -7,6 +7,7 @@
 #include <volume_model/VolumeNode.h>
 
 #include <osg/NodeVisitor>
+#include <osg/Notify>
 #include <osgDB/FileNameUtils>
 #include <osgDB/FileUtils>
 #include <osgDB/ReadFile>
@@ -38,6 +39,30 @@ std::vector<VolumeNode*> volumeNodes(osg::Node& root)
     return collect.nodes;
 }
 
+/// Collects what OSG's scene-file parser and the volren serializers warn about while a scene is
+/// read (OSG skips unknown classes and properties; after a volren field fails, OSG may replace
+/// that error by a vaguer one), passing every message on to the usual handler.
+class ParserWarnings : public osg::NotifyHandler
+{
+public:
+    ParserWarnings() : _previous(osg::getNotifyHandler()) {}
+    void notify(osg::NotifySeverity severity, const char* message) override
+    {
+        const std::string text = message;
+        if (severity <= osg::WARN && collected.empty() &&
+            (text.rfind("volren::", 0) == 0 || text.rfind("InputStream", 0) == 0 ||
+             text.rfind("AsciiInputIterator", 0) == 0 || text.rfind("XmlInputIterator", 0) == 0 ||
+             text.rfind("ObjectWrapper", 0) == 0))
+            collected = text.substr(0, text.find_last_not_of("\r\n") + 1);
+        if (_previous) _previous->notify(severity, message);
+    }
+    osg::NotifyHandler* previous() const { return _previous.get(); }
+    std::string collected;  ///< the first warning: the cause (later ones are its consequences)
+
+private:
+    osg::ref_ptr<osg::NotifyHandler> _previous;
+};
+
 }  // namespace
 
 std::string defaultInput()
@@ -54,10 +79,14 @@ osg::ref_ptr<VolumeScene> loadScene(const RenderOptions& options)
         scene = makeDefaultScene(readVolumeWithProgress(input).get());
     } else {
         if (!osgDB::fileExists(input)) throw std::runtime_error(input + ": no such file");
+        osg::ref_ptr<ParserWarnings> warnings = new ParserWarnings;
+        osg::setNotifyHandler(warnings.get());
         osgDB::ReaderWriter::ReadResult result = osgDB::Registry::instance()->readNode(input, nullptr);
-        if (!result.validNode()) {
-            const std::string why = result.message().empty() ? "no reader for this file type, or the file is invalid"
-                                                             : result.message();
+        osg::setNotifyHandler(warnings->previous());
+        if (!result.validNode() || !warnings->collected.empty()) {
+            const std::string why = !warnings->collected.empty() ? warnings->collected
+                                    : !result.message().empty()  ? result.message()
+                                                                 : "no reader for this file type, or the file is invalid";
             throw std::runtime_error(input + ": cannot read scene: " + why);
         }
         scene = result.getNode();

@@ -1,0 +1,155 @@
+// volren::VolumeNode: its (shareable) Volume and TransferFunction and its RenderSettings.
+// Name, node mask, state set and callbacks come from the osg::Node wrapper.
+//
+// Settings are written as `key "value"` pairs under the names of `volren render --set` and read
+// back through RenderSettings::set(): every key RenderSettings::keys() lists is written, so a
+// new setting is saved without touching this file, and a file's values get the model's own
+// validation and error messages. Exceptions, because get() is made for people, not files:
+// numbers are written at full precision from the fields themselves (get() rounds to 6 digits),
+// `samplerate` is skipped (an alias of sampleFactor), and slot keys write the chosen
+// implementation itself (get() reports a forced slot as "null (forced)").
+#include "StreamFields.h"
+
+#include <volume_model/VolumeNode.h>
+
+#include <osgDB/ObjectWrapper>
+
+#include <cmath>
+
+namespace {
+
+using namespace volren::serializers;
+using volren::RenderSettings;
+using volren::VolumeNode;
+
+/// Numeric settings written from their fields at full precision.
+const std::vector<std::pair<std::string, double RenderSettings::*>>& exactNumbers()
+{
+    static const std::vector<std::pair<std::string, double RenderSettings::*>> fields = {
+        {"sampleFactor", &RenderSettings::sampleDistanceFactor},
+        {"sampleDistance", &RenderSettings::sampleDistance},
+        {"earlyTermination", &RenderSettings::earlyTerminationThreshold},
+        {"isoValue", &RenderSettings::isoValue},
+        {"shadingThreshold", &RenderSettings::shadingThreshold},
+        {"ambient", &RenderSettings::ambient},
+        {"specular", &RenderSettings::specular},
+        {"shininess", &RenderSettings::shininess},
+        {"roughness", &RenderSettings::roughness},
+        {"threshold", &RenderSettings::threshold}};
+    return fields;
+}
+
+/// The settings as key/value text pairs; keys the scene decides (empty values) are left out.
+std::vector<std::pair<std::string, std::string>> settingPairs(const RenderSettings& settings)
+{
+    std::vector<std::pair<std::string, std::string>> pairs;
+    for (const auto& entry : RenderSettings::keys()) {
+        const std::string& key = entry.first;
+        if (key == "samplerate") continue;  // alias of sampleFactor
+        std::string value;
+        if (const std::string slot = RenderSettings::slotForKey(key); !slot.empty()) {
+            auto it = settings.functions.find(slot);
+            if (it != settings.functions.end()) value = it->second;
+        } else {
+            value = settings.get(key);
+            for (const auto& [name, field] : exactNumbers())
+                if (name == key && std::isfinite(settings.*field)) value = exactNumber(settings.*field);
+        }
+        if (!value.empty()) pairs.emplace_back(key, value);
+    }
+    return pairs;
+}
+
+bool validImplementationName(const std::string& name)
+{
+    if (name.empty()) return false;
+    for (char c : name)
+        if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_')) return false;
+    return true;
+}
+
+// --- Volume and TransferFunction: nested objects, shared by unique id -----------------
+
+bool checkVolume(const VolumeNode& node) { return node.getVolume() != nullptr; }
+
+bool writeVolume(osgDB::OutputStream& os, const VolumeNode& node)
+{
+    writeObjectField(os, node.getVolume());
+    return true;
+}
+
+bool readVolume(osgDB::InputStream& is, VolumeNode& node)
+{
+    osg::ref_ptr<volren::Volume> volume;
+    if (!readObjectField(is, volume, "volren::VolumeNode Volume", "volren::Volume")) return false;
+    node.setVolume(volume.get());
+    return true;
+}
+
+bool checkTransferFunction(const VolumeNode& node) { return node.getTransferFunction() != nullptr; }
+
+bool writeTransferFunction(osgDB::OutputStream& os, const VolumeNode& node)
+{
+    writeObjectField(os, node.getTransferFunction());
+    return true;
+}
+
+bool readTransferFunction(osgDB::InputStream& is, VolumeNode& node)
+{
+    osg::ref_ptr<volren::TransferFunction> tf;
+    if (!readObjectField(is, tf, "volren::VolumeNode TransferFunction", "volren::TransferFunction")) return false;
+    node.setTransferFunction(tf.get());
+    return true;
+}
+
+// --- Settings ------------------------------------------------------------------------------
+
+bool checkSettings(const VolumeNode&) { return true; }
+
+bool writeSettings(osgDB::OutputStream& os, const VolumeNode& node)
+{
+    const auto pairs = settingPairs(node.settings);
+    writeInt(os, std::int64_t(pairs.size()));
+    os << os.BEGIN_BRACKET << std::endl;
+    for (const auto& [key, value] : pairs) {
+        os << key;  // an identifier: a bare word
+        writeString(os, value);
+        os << std::endl;
+    }
+    os << os.END_BRACKET << std::endl;
+    return true;
+}
+
+bool readSettings(osgDB::InputStream& is, VolumeNode& node)
+{
+    const std::string field = "volren::VolumeNode Settings";
+    std::int64_t count = 0;
+    if (!readInt(is, count, 0, 10000, field)) return false;
+    is >> is.BEGIN_BRACKET;
+    RenderSettings settings;
+    for (std::int64_t n = 0; n < count; ++n) {
+        std::string key, value, error;
+        if (!readString(is, key, field) || !readString(is, value, field + " " + key)) return false;
+        if (const std::string slot = RenderSettings::slotForKey(key); !slot.empty()) {
+            if (!validImplementationName(value))
+                return fail(is, field + ": " + key + " must name an implementation, got '" + value + "'"), false;
+            settings.functions[slot] = value;
+        } else if (!settings.set(key, value, error)) {
+            return fail(is, field + ": " + error), false;
+        }
+    }
+    is >> is.END_BRACKET;
+    if (is.getException()) return false;
+    node.settings = settings;
+    return true;
+}
+
+}  // namespace
+
+REGISTER_OBJECT_WRAPPER(volren_VolumeNode, new volren::VolumeNode, volren::VolumeNode,
+                        "osg::Object osg::Node volren::VolumeNode")
+{
+    ADD_USER_SERIALIZER(Volume);
+    ADD_USER_SERIALIZER(TransferFunction);
+    ADD_USER_SERIALIZER(Settings);
+}
