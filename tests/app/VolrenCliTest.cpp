@@ -127,6 +127,12 @@ TEST(VolrenCli, InfoPrintsGeometryAndValues)
     EXPECT_NE(run.output.find("dims:        256 x 242 x 154"), std::string::npos) << run.output;
     EXPECT_NE(run.output.find("voxel type:  uint8"), std::string::npos) << run.output;
     EXPECT_NE(run.output.find("spacing:     0.7199"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("blocks:      1 channel x 1 time point"), std::string::npos) << run.output;
+
+    const CliRun stack = volren("info '" + sharedData("microscopy/xyzc_16bit__dna_conf_wf.tif") + "'");
+    ASSERT_EQ(stack.exitCode, 0) << stack.output;
+    EXPECT_NE(stack.output.find("dims:        133 x 130 x 45"), std::string::npos) << stack.output;
+    EXPECT_NE(stack.output.find("blocks:      2 channels x 1 time point"), std::string::npos) << stack.output;
 }
 
 TEST(VolrenCli, ImplementationsComeFromPluginLibrariesAndShaderFoldersAtRunTime)
