@@ -74,7 +74,7 @@ bool PermutationSpace::isValid(const Composition& c)
     // What the traversal calls decides what may be non-null (ShaderFunction::calls).
     const ShaderFunction* marcher = ShaderFunctionRegistry::instance().find("RayTraversal", traversal);
     const bool shades = !marcher || marcher->mayCall("Shading");
-    const bool readsGradient = marcher && !marcher->calls.empty() && marcher->mayCall("Gradient");
+    const bool readsGradient = marcher && marcher->declaresCall("Gradient");
     if (!shades && (shading != "null" || illumination != "null" || c.lightCount != 0)) return false;
     if (readsGradient && gradient == "null") return false;
     return gradient == "null" || shading != "null" || readsGradient;

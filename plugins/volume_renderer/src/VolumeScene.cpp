@@ -241,7 +241,7 @@ Composition VolumeScene::chooseComposition(const VolumeNode& node, const SceneOf
     const std::string illumination = shades ? chosen("Illumination", lights > 0 ? "blinn_phong" : "null") : "null";
     const std::string shading =
         shades ? chosen("Shading", lights > 0 && illumination != "null" ? "lighting" : "null") : "null";
-    const bool needGradient = shading != "null" || (marcher && !marcher->calls.empty() && marcher->mayCall("Gradient"));
+    const bool needGradient = shading != "null" || (marcher && marcher->declaresCall("Gradient"));
     const std::string gradient = chosen("Gradient", needGradient ? "central" : "null");
     c.choice["Illumination"] = illumination;
     c.choice["Shading"] = shading;

@@ -162,6 +162,8 @@ struct ShaderFunction
     {
         return calls.empty() || std::find(calls.begin(), calls.end(), slot) != calls.end();
     }
+    /// Whether this implementation lists `slot` among its calls (so that slot must be real).
+    bool declaresCall(const std::string& slot) const { return !calls.empty() && mayCall(slot); }
 };
 
 }  // namespace volren
