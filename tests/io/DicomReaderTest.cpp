@@ -381,7 +381,7 @@ TEST(DicomReader, BadSeriesAreRejectedWithFileAndReason)
     check(root + "/cut", "s1.dcm: truncated: pixel data");
 
     fs::create_directories(root + "/empty");
-    check(root + "/empty", "no DICOM files");
+    check(root + "/empty", "empty directory (expected TIFF, 2D image or DICOM slices)");
     std::ofstream(root + "/junk.dcm") << "definitely not a DICOM file";
     check(root + "/junk.dcm", "not a DICOM file");
     check(root + "/nope.dcm", "no such file");

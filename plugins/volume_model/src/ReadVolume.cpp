@@ -28,12 +28,15 @@ const char* const volumeExtensions[] = {"nii", "nrrd", "nhdr", "mhd", "mha", "ra
 /// The reader for a directory: numbered TIFF slices, other 2D images, else a DICOM series.
 std::string directoryReader(const std::string& dir)
 {
-    bool images = false;
+    bool images = false, files = false;
     for (const std::string& name : osgDB::getDirectoryContents(dir)) {
+        if (name == "." || name == "..") continue;
+        files = true;
         const std::string ext = osgDB::getLowerCaseFileExtension(name);
         if (ext == "tif" || ext == "tiff") return "tiff";
         if (ext == "png" || ext == "jpg" || ext == "jpeg" || ext == "bmp" || ext == "exr" || ext == "pgm") images = true;
     }
+    if (!files) throw std::runtime_error(dir + ": empty directory (expected TIFF, 2D image or DICOM slices)");
     return images ? "imgstack" : "dicom";
 }
 
