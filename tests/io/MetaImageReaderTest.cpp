@@ -16,11 +16,6 @@
 namespace volren::test {
 namespace {
 
-void writeFile(const std::string& path, const std::string& bytes)
-{
-    std::ofstream(path, std::ios::binary).write(bytes.data(), std::streamsize(bytes.size()));
-}
-
 /// A zlib stream (what MetaImage's CompressedData holds).
 std::string zlibbed(const std::string& bytes)
 {
@@ -41,15 +36,6 @@ std::string uint16Ramp(int n, int scale)
     return bytes;
 }
 
-
-void expectRejected(const std::string& name, const std::string& bytes, const std::string& reason)
-{
-    const std::string path = tempDirectory() + "/" + name;
-    writeFile(path, bytes);
-    const std::string why = expectReadError(path);
-    EXPECT_NE(why.find(path), std::string::npos) << why;
-    EXPECT_NE(why.find(reason), std::string::npos) << name << ": " << why;
-}
 
 const std::string header = "ObjectType = Image\nNDims = 3\nDimSize = 2 3 4\nElementSpacing = 0.5 0.25 3\nElementType = MET_USHORT\n";
 

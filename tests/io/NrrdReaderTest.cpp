@@ -20,11 +20,6 @@
 namespace volren::test {
 namespace {
 
-void writeFile(const std::string& path, const std::string& bytes)
-{
-    std::ofstream(path, std::ios::binary).write(bytes.data(), std::streamsize(bytes.size()));
-}
-
 std::string gzipped(const std::string& bytes)
 {
     z_stream zs{};
@@ -273,15 +268,6 @@ TEST(NrrdReader, Int32BecomesExactFloatOrIsRefused)
 
 /// Writes `bytes` as `name` in a fresh folder and expects readVolumeFile to fail with a message
 /// that names the file and contains `reason`.
-void expectRejected(const std::string& name, const std::string& bytes, const std::string& reason)
-{
-    const std::string path = tempDirectory() + "/" + name;
-    writeFile(path, bytes);
-    const std::string why = expectReadError(path);
-    EXPECT_NE(why.find(path), std::string::npos) << why;
-    EXPECT_NE(why.find(reason), std::string::npos) << name << ": " << why;
-}
-
 TEST(NrrdReader, TruncatedPayloadIsRejected)
 {
     expectRejected("short.nrrd", smallHeader + "encoding: raw\n\n" + int16Ramp(20), "truncated");

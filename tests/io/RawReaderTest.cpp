@@ -16,11 +16,6 @@
 namespace volren::test {
 namespace {
 
-void writeFile(const std::string& path, const std::string& bytes)
-{
-    std::ofstream(path, std::ios::binary).write(bytes.data(), std::streamsize(bytes.size()));
-}
-
 std::string floatRamp(int n)
 {
     std::string bytes;

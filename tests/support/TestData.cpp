@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 
 namespace volren::test {
 
@@ -56,6 +57,20 @@ osg::ref_ptr<Volume> constantVolume(VoxelType type, const osg::Vec3i& dims, doub
     }
     v->dirty();
     return v;
+}
+
+void writeFile(const std::string& path, const std::string& bytes)
+{
+    std::ofstream(path, std::ios::binary).write(bytes.data(), std::streamsize(bytes.size()));
+}
+
+void expectRejected(const std::string& name, const std::string& bytes, const std::string& reason)
+{
+    const std::string path = tempDirectory() + "/" + name;
+    writeFile(path, bytes);
+    const std::string why = expectReadError(path);
+    EXPECT_NE(why.find(path), std::string::npos) << why;
+    EXPECT_NE(why.find(reason), std::string::npos) << name << ": " << why;
 }
 
 std::string expectReadError(const std::string& path, const osgDB::Options* options)

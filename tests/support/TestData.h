@@ -25,6 +25,13 @@ std::string tempDirectory();
 osg::ref_ptr<Volume> constantVolume(VoxelType type, const osg::Vec3i& dims, double value,
                                     const osg::Vec3d& spacing = {1.0, 1.0, 1.0});
 
+/// Writes `bytes` to `path` (binary).
+void writeFile(const std::string& path, const std::string& bytes);
+
+/// Writes `bytes` as `name` in this test's temporary directory and expects readVolumeFile to
+/// reject it with a message naming the file and containing `reason`.
+void expectRejected(const std::string& name, const std::string& bytes, const std::string& reason);
+
 /// The message of readVolumeFile's error for `path`; a test failure when it reads fine.
 std::string expectReadError(const std::string& path, const osgDB::Options* options = nullptr);
 
