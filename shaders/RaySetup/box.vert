@@ -3,7 +3,7 @@
 // node's origin; its corners are the proxy geometry's vertices) and hands the fragment stage
 // its clip-space position, its volume-texture-space position (the rasterised "colour cube")
 // and the clip <-> volume-texture-space matrices.
-in vec4 osg_Vertex;
+layout(location = 0) in vec4 osg_Vertex;  // location 0: also the fixed-function vertex array
 uniform mat4 osg_ModelViewProjectionMatrix;
 uniform vec3 volren_worldSize;
 out vec4 volren_vClip;

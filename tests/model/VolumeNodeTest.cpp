@@ -41,6 +41,8 @@ TEST(DefaultScene, HoldsTheVolumeAnAutomaticTransferFunctionAndAHeadlight)
     for (std::size_t i = 0; i < v->voxelCount(); ++i) v->data()[i] = std::uint8_t(i % 3 == 0 ? 200 : 10);
     v->dirty();
     osg::ref_ptr<osg::Group> scene = makeDefaultScene(v.get());
+    EXPECT_EQ(std::string(scene->libraryName()) + "::" + scene->className(), "volren::VolumeScene")
+        << "the root is the volume pass, so a stock OSG viewer renders the volume";
     VolumeNode* node = findFirstVolumeNode(scene.get());
     ASSERT_NE(node, nullptr);
     EXPECT_EQ(node->getVolume(), v.get());

@@ -1,14 +1,32 @@
 #include <volume_model/AutoTransferFunction.h>
 #include <volume_model/DefaultScene.h>
+#include <volume_model/ReadVolume.h>
 
 #include <osg/LightSource>
 #include <osg/NodeVisitor>
+#include <osg/Notify>
+#include <osgDB/ObjectWrapper>
+#include <osgDB/Registry>
 
 namespace volren {
 
+osg::ref_ptr<osg::Group> makeSceneRoot()
+{
+    // The model has no GL, so it does not link the renderer: OSG's wrapper registry creates the
+    // pass from its class name, loading osgdb_serializers_volren (which links the renderer).
+    registerPluginPath();
+    osgDB::ObjectWrapper* wrapper =
+        osgDB::Registry::instance()->getObjectWrapperManager()->findWrapper("volren::VolumeScene");
+    osg::ref_ptr<osg::Object> made = wrapper ? wrapper->createInstance() : nullptr;
+    if (auto* pass = dynamic_cast<osg::Group*>(made.get())) return pass;
+    OSG_WARN << "volren: no volren::VolumeScene (plugin osgdb_serializers_volren not on OSG's library path); "
+                "the default scene will not render its volume in a stock OSG viewer" << std::endl;
+    return new osg::Group;
+}
+
 osg::ref_ptr<osg::Group> makeDefaultScene(Volume* volume)
 {
-    osg::ref_ptr<osg::Group> root = new osg::Group;
+    osg::ref_ptr<osg::Group> root = makeSceneRoot();
     root->setName("volren default scene");
 
     osg::ref_ptr<osg::LightSource> headlight = new osg::LightSource;

@@ -1,3 +1,5 @@
+#include "MatrixUniforms.h"
+
 #include <volume_renderer/Slots.h>
 #include <volume_renderer/VolumeScene.h>
 #include <volume_renderer/VolumeTextures.h>
@@ -121,6 +123,7 @@ osg::ref_ptr<osg::Geometry> makeBoxGeometry(const osg::Vec3d& size)
     geometry->setUseVertexArrayObject(true);  // core profiles draw nothing without a bound VAO
     geometry->setVertexArray(corners.get());
     geometry->addPrimitiveSet(new osg::DrawElementsUShort(GL_TRIANGLES, 36, faces));
+    geometry->setDrawCallback(new MatrixUniforms);  // for viewers whose State sets no osg_ matrices
     return geometry;
 }
 

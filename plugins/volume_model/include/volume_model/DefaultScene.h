@@ -6,8 +6,14 @@
 
 namespace volren {
 
-/// The scene a bare volume file gets: the volume centred at the origin with a transfer
-/// function from its histogram, and one headlight (an osg::LightSource fixed to the camera).
+/// A new volume pass (a `volren::VolumeScene`, made through OSG's wrapper registry so that
+/// the model does not link GL); a plain osg::Group, with a warning, when the serializer plugin
+/// cannot be found.
+osg::ref_ptr<osg::Group> makeSceneRoot();
+
+/// The scene a bare volume file gets, under makeSceneRoot(): the volume centred at the origin
+/// with a transfer function from its histogram, and one headlight (an osg::LightSource fixed
+/// to the camera). Any OSG viewer renders it.
 osg::ref_ptr<osg::Group> makeDefaultScene(Volume* volume);
 
 /// First VolumeNode found below `root` (depth first), or null.

@@ -1,0 +1,26 @@
+#include "MatrixUniforms.h"
+
+#include <osg/GLExtensions>
+#include <osg/Program>
+#include <osg/State>
+#include <osg/Uniform>
+
+namespace volren {
+
+void MatrixUniforms::drawImplementation(osg::RenderInfo& renderInfo, const osg::Drawable* drawable) const
+{
+    osg::State& state = *renderInfo.getState();
+    if (!state.getUseModelViewAndProjectionUniforms()) {
+        static const unsigned int mvpName = osg::Uniform::getNameID("osg_ModelViewProjectionMatrix");
+        if (const osg::Program::PerContextProgram* pcp = state.getLastAppliedProgramObject()) {
+            const GLint location = pcp->getUniformLocation(mvpName);
+            if (location >= 0) {
+                const osg::Matrixf mvp(state.getModelViewMatrix() * state.getProjectionMatrix());
+                state.get<osg::GLExtensions>()->glUniformMatrix4fv(location, 1, GL_FALSE, mvp.ptr());
+            }
+        }
+    }
+    drawable->drawImplementation(renderInfo);
+}
+
+}  // namespace volren
