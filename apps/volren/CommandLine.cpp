@@ -65,6 +65,7 @@ RenderOptions parseRenderOptions(const std::vector<std::string>& args, bool requ
             o.orthoHeight = parseNumber(value(i), "--ortho");
             if (!(*o.orthoHeight > 0.0)) throw UsageError("--ortho: height must be positive");
         } else if (a == "--tf") o.tfFile = value(i);
+        else if (a == "--tf-keep-range") o.tfKeepRange = true;
         else if (a == "--background") {
             o.background = parseVec3(value(i), "--background");
             for (int c = 0; c < 3; ++c)

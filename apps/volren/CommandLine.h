@@ -24,7 +24,8 @@ struct RenderOptions
     std::optional<osg::Vec3d> eye, center, up;  ///< --eye/--center/--up
     std::optional<double> fov;              ///< --fov DEG (vertical)
     std::optional<double> orthoHeight;      ///< --ortho HEIGHT (world units, visible height)
-    std::string tfFile;                     ///< --tf FILE.tf
+    std::string tfFile;                     ///< --tf FILE.tf | PRESETS.json[#NAME]
+    bool tfKeepRange = false;               ///< --tf-keep-range: a ParaView preset keeps its own values
     osg::Vec3d background{0.0, 0.0, 0.0};   ///< --background r,g,b in [0,1]
     std::vector<std::pair<std::string, std::string>> settings;  ///< --set KEY=VALUE
     int frames = 1;                         ///< --frames N

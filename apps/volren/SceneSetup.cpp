@@ -100,7 +100,19 @@ osg::ref_ptr<VolumeScene> loadScene(const RenderOptions& options)
     const std::vector<VolumeNode*> nodes = volumeNodes(*root);
     if (!options.tfFile.empty()) {
         osg::ref_ptr<TransferFunction> tf = readTransferFunctionFile(options.tfFile);
-        for (VolumeNode* node : nodes) node->setTransferFunction(tf.get());
+        // ParaView presets are made for any data: like ParaView, map them onto each volume's range.
+        const std::string file = options.tfFile.substr(0, options.tfFile.rfind('#'));
+        const bool preset = osgDB::getLowerCaseFileExtension(file) == "json" && !options.tfKeepRange;
+        for (VolumeNode* node : nodes) {
+            if (preset && node->getVolume()) {
+                osg::ref_ptr<TransferFunction> fitted = new TransferFunction(*tf);
+                const auto [lo, hi] = node->getVolume()->valueRange();
+                fitted->remap(lo, hi > lo ? hi : lo + 1.0);
+                node->setTransferFunction(fitted.get());
+            } else {
+                node->setTransferFunction(tf.get());
+            }
+        }
     }
     const ShaderFunctionRegistry& registry = ShaderFunctionRegistry::instance();
     for (const auto& [key, value] : options.settings) {

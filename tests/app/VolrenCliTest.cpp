@@ -72,6 +72,32 @@ TEST(VolrenCli, NoArgumentsRendersTheDefaultSceneToVolrenPng)
         for (int c = 0; c < 3; ++c) EXPECT_EQ(img.at(x, y, c), 0.0f);
 }
 
+TEST(VolrenCli, ParaViewPresetIsFittedToTheDataRangeUnlessKeptAsIs)
+{
+    VOLREN_REQUIRE_SHARED_DATA();
+    const std::string dir = tempDirectory();
+    const std::string volume = sharedData("mri/ch2.nii.gz");  // values 0 .. 254
+    // Red at 0, blue at 1; opacity 0 at 0, 1 at 1.
+    std::ofstream(dir + "/p.json") << R"([{"Name":"red-blue","ColorSpace":"RGB",
+        "RGBPoints":[0,1,0,0, 1,0,0,1], "Points":[0,0,0.5,0, 1,1,0.5,0]}])";
+    const std::string common = " --size 32x32 --ortho 400 --set jitter=off --set lighting=off --tf '" + dir + "/p.json#red-blue'";
+    CliRun run = volren("render '" + volume + "' -o '" + dir + "/kept.png'" + common + " --tf-keep-range");
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    // Kept: every tissue value (>= 1) is opaque pure blue, so the first tissue sample decides.
+    Image img = readImage(dir + "/kept.png");
+    EXPECT_EQ(img.at(16, 16, 2), 1.0f);
+    EXPECT_EQ(img.at(16, 16, 0), 0.0f);
+    run = volren("render '" + volume + "' -o '" + dir + "/fitted.png'" + common);
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    // Fitted onto 0 .. 254: tissue is partly red and no longer opaque at its first sample.
+    img = readImage(dir + "/fitted.png");
+    EXPECT_GT(img.at(16, 16, 0), 0.05f);
+    EXPECT_LT(img.at(16, 16, 2), 0.95f);
+    run = volren("render '" + volume + "' -o '" + dir + "/x.png'" + " --tf '" + dir + "/p.json#nope'");
+    EXPECT_EQ(run.exitCode, 1);
+    EXPECT_NE(run.output.find(dir + "/p.json: no preset named 'nope' (presets: 'red-blue')"), std::string::npos) << run.output;
+}
+
 TEST(VolrenCli, RenderHonoursSizeFramesStatsAndTransferFunction)
 {
     VOLREN_REQUIRE_SHARED_DATA();

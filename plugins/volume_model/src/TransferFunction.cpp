@@ -82,6 +82,23 @@ double TransferFunction::domainMax() const
     return hi > domainMin() ? hi : domainMin() + 1.0;  // a single point still spans a window
 }
 
+void TransferFunction::remap(double newMin, double newMax)
+{
+    if (!std::isfinite(newMin) || !std::isfinite(newMax) || !(newMin < newMax))
+        throw std::invalid_argument("transfer-function remap needs finite min < max, got " + std::to_string(newMin) +
+                                    ".." + std::to_string(newMax));
+    const double lo = domainMin(), hi = domainMax();
+    const double scale = (newMax - newMin) / (hi - lo);
+    Points moved;
+    for (const auto& [value, rgba] : _points) moved[newMin + (value - lo) * scale] = rgba;
+    _points.swap(moved);
+    if (_hasDomain) {
+        _domainMin = newMin;
+        _domainMax = newMax;
+    }
+    ++_modifiedCount;
+}
+
 void TransferFunction::setResolution(unsigned int entries)
 {
     if (entries < 2 || entries > 65536)

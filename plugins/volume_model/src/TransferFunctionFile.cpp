@@ -1,14 +1,19 @@
+#include <volume_model/ParaViewPreset.h>
 #include <volume_model/ParseNumber.h>
 #include <volume_model/TransferFunctionFile.h>
 
-#include <cmath>
+#include <osgDB/FileNameUtils>
+
+#include <cerrno>
 #include <cstdio>
-#include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <iomanip>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
+#include <sys/stat.h>
+#include <unistd.h>
 #include <vector>
 
 namespace volren {
@@ -26,6 +31,15 @@ struct RawPoint
 
 osg::ref_ptr<TransferFunction> readTransferFunctionFile(const std::string& path)
 {
+    const std::size_t hash = path.rfind('#');
+    const std::string file = hash == std::string::npos ? path : path.substr(0, hash);
+    if (osgDB::getLowerCaseFileExtension(file) == "json")
+        return readParaViewPreset(file, hash == std::string::npos ? std::string() : path.substr(hash + 1));
+    return readTfFile(path);
+}
+
+osg::ref_ptr<TransferFunction> readTfFile(const std::string& path)
+{
     std::ifstream in(path);
     if (!in) throw std::runtime_error(path + ": cannot open transfer-function file");
 
@@ -34,11 +48,38 @@ osg::ref_ptr<TransferFunction> readTransferFunctionFile(const std::string& path)
     std::string line;
     int lineNo = 0;
     auto fail = [&](const std::string& why) { throw std::runtime_error(path + ":" + std::to_string(lineNo) + ": " + why); };
+    auto number = [&](std::istringstream& words, const std::string& what) {
+        std::string s;
+        double v = 0.0;
+        if (!(words >> s) || !parseFiniteNumber(s, v)) fail(what + " needs a number");
+        return v;
+    };
+    bool hasDomain = false;
+    double domain[2] = {0.0, 1.0};
+    unsigned int resolution = 0;
     while (std::getline(in, line)) {
         ++lineNo;
         std::istringstream words(line);
         std::string first;
-        if (!(words >> first) || first[0] == '#') continue;
+        if (!(words >> first)) continue;
+        if (first == "#volren") {  // volren's settings, a comment to every other reader
+            std::string key;
+            words >> key;
+            if (key == "domain") {
+                domain[0] = number(words, "#volren domain");
+                domain[1] = number(words, "#volren domain");
+                if (!(domain[0] < domain[1])) fail("#volren domain needs MIN < MAX");
+                hasDomain = true;
+            } else if (key == "resolution") {
+                const double n = number(words, "#volren resolution");
+                if (n < 2 || n > 65536 || n != double(unsigned(n))) fail("#volren resolution must be an integer in 2..65536");
+                resolution = unsigned(n);
+            } else {
+                fail("unknown '#volren " + key + "' (known: domain, resolution)");
+            }
+            continue;
+        }
+        if (first[0] == '#') continue;
         if (first == "colour-scale" || first == "color-scale") {
             std::string s;
             if (!(words >> s) || !parseFiniteNumber(s, scale) || !(scale > 0.0)) fail("colour-scale needs a positive number");
@@ -71,20 +112,40 @@ osg::ref_ptr<TransferFunction> readTransferFunctionFile(const std::string& path)
         }
         tf->setPoint(p.value, rgba);
     }
+    if (hasDomain) tf->setDomain(domain[0], domain[1]);
+    if (resolution) tf->setResolution(resolution);
     return tf;
 }
 
 void writeTransferFunctionFile(const TransferFunction& tf, const std::string& path)
 {
-    std::ofstream out(path);
-    if (!out) throw std::runtime_error(path + ": cannot open for writing");
-    out << "# volren transfer function: value r g b a (alpha = opacity per smallest voxel spacing)\n";
-    out << "colour-scale 1\n";
-    out << std::setprecision(std::numeric_limits<double>::max_digits10);
-    for (const auto& [value, c] : tf.points())
-        out << value << ' ' << c.r() << ' ' << c.g() << ' ' << c.b() << ' ' << c.a() << '\n';
-    out.flush();
-    if (!out) throw std::runtime_error(path + ": write error");
+    // A read-only file stays as it is, even where renaming over it would work (root, or a
+    // writable folder): the user made it read-only.
+    struct stat existing;
+    if (::stat(path.c_str(), &existing) == 0 && !(existing.st_mode & (S_IWUSR | S_IWGRP | S_IWOTH)))
+        throw std::runtime_error(path + ": file is read-only; not replaced");
+    const std::string temporary = path + ".tmp-" + std::to_string(::getpid());
+    {
+        std::ofstream out(temporary);
+        if (!out) throw std::runtime_error(path + ": cannot write (" + temporary + ": " + std::strerror(errno) + ")");
+        out << "# volren transfer function (OSG .tf format): value r g b a, alpha = opacity per smallest voxel spacing\n";
+        out << std::setprecision(std::numeric_limits<double>::max_digits10);
+        if (tf.hasExplicitDomain()) out << "#volren domain " << tf.domainMin() << ' ' << tf.domainMax() << '\n';
+        out << "#volren resolution " << tf.resolution() << '\n';
+        out << "colour-scale 1\n";
+        for (const auto& [value, c] : tf.points())
+            out << value << ' ' << c.r() << ' ' << c.g() << ' ' << c.b() << ' ' << c.a() << '\n';
+        out.flush();
+        if (!out) {
+            std::remove(temporary.c_str());
+            throw std::runtime_error(path + ": write error (disk full?); the old file is unchanged");
+        }
+    }
+    if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+        const std::string why = std::strerror(errno);
+        std::remove(temporary.c_str());
+        throw std::runtime_error(path + ": cannot replace the file (" + why + "); the old file is unchanged");
+    }
 }
 
 }  // namespace volren

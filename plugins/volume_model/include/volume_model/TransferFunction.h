@@ -39,6 +39,10 @@ public:
     double domainMin() const;  ///< data value of the first lookup-table entry
     double domainMax() const;  ///< data value of the last lookup-table entry
 
+    /// Moves the points (and an explicit domain) linearly so that [domainMin, domainMax] becomes
+    /// [newMin, newMax]: a preset made for another value range applied to this data.
+    void remap(double newMin, double newMax);
+
     /// Number of lookup-table entries (2 .. 65536, default 1024).
     void setResolution(unsigned int entries);
     unsigned int resolution() const { return _resolution; }  ///< lookup-table entries

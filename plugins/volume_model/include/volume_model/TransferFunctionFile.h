@@ -6,13 +6,21 @@
 
 namespace volren {
 
-/// Reads OSG's `.tf` text format: lines `value r g b a [comment]`, `#` comments, and an optional
-/// `colour-scale S` (components are divided by S, 255 by default). Values are data values.
-/// Unlike the stock osgdb_tf reader it rejects malformed lines; throws std::runtime_error
-/// with "file:line: reason".
+/// Reads a transfer function, by extension: `.json` is a ParaView colour-map preset
+/// (readParaViewPreset; `presets.json#Name` picks one preset of a list), anything else OSG's
+/// `.tf` text format (readTfFile). Throws std::runtime_error naming the file and the reason.
 osg::ref_ptr<TransferFunction> readTransferFunctionFile(const std::string& path);
 
-/// Writes `tf` in the `.tf` format with `colour-scale 1` (exact floats); throws std::runtime_error.
+/// Reads OSG's `.tf` text format (docs/transfer-functions.md): lines `value r g b a [comment]`,
+/// `#` comments, an optional `colour-scale S` (components are divided by S, 255 by default), and
+/// volren's own comment lines `#volren domain MIN MAX` / `#volren resolution N`. Values are data
+/// values. Unlike the stock osgdb_tf reader it rejects malformed lines; throws
+/// std::runtime_error with "file:line: reason".
+osg::ref_ptr<TransferFunction> readTfFile(const std::string& path);
+
+/// Saves `tf` in the `.tf` format (`colour-scale 1`, numbers that read back exactly, domain and
+/// resolution as `#volren` lines the stock reader skips). Writes a temporary file next to `path`
+/// and renames it, so a failure never leaves a half-written file; throws std::runtime_error.
 void writeTransferFunctionFile(const TransferFunction& tf, const std::string& path);
 
 }  // namespace volren
