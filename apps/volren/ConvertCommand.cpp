@@ -1,6 +1,7 @@
 #include "CommandLine.h"
 #include "Commands.h"
 
+#include <volume_model/DefaultScene.h>
 #include <volume_model/ReadVolume.h>
 
 #include <osgDB/FileNameUtils>
@@ -32,15 +33,20 @@ int convertCommand(const std::vector<std::string>& args)
 
     osg::ref_ptr<Volume> volume = readVolumeWithProgress(files[0]);
     osg::ref_ptr<osgDB::Options> options = new osgDB::Options(encoding.empty() ? "" : "encoding=" + encoding);
-    // osgDB::writeObjectFile's own path, keeping the writer's message for the error.
-    const osgDB::ReaderWriter::WriteResult result = osgDB::Registry::instance()->writeObject(*volume, out, options.get());
+    // An OSG scene file gets the volume's default scene (the volume referenced by its file).
+    const std::string ext = osgDB::getLowerCaseFileExtension(out);
+    const bool scene = ext == "osgt" || ext == "osgb" || ext == "osgx";
+    // osgDB::write*File's own path, keeping the writer's message for the error.
+    const osgDB::ReaderWriter::WriteResult result =
+        scene ? osgDB::Registry::instance()->writeNode(*makeDefaultScene(volume.get()), out, options.get())
+              : osgDB::Registry::instance()->writeObject(*volume, out, options.get());
     if (!result.success()) {
         std::string why = result.message();
         if (why.empty()) why = "no volume writer for extension '" + osgDB::getLowerCaseFileExtension(out) + "'";
         throw std::runtime_error(why.find(out) == std::string::npos ? out + ": " + why : why);
     }
     const osg::Vec3i& d = volume->dims();
-    std::cout << files[0] << " -> " << out << " (" << d.x() << " x " << d.y() << " x " << d.z() << " "
+    std::cout << files[0] << " -> " << out << (scene ? " (default scene; " : " (") << d.x() << " x " << d.y() << " x " << d.z() << " "
               << voxelTypeName(volume->type()) << ", " << volume->channels() << " channel"
               << (volume->channels() == 1 ? "" : "s") << ")\n";
     return 0;

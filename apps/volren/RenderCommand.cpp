@@ -30,7 +30,7 @@ int renderCommand(const std::vector<std::string>& args, bool defaultRun)
 {
     RenderOptions options = parseRenderOptions(args, !defaultRun);
     if (defaultRun) options.output = "volren.png";
-    const std::string input = options.input.empty() ? defaultInput() : options.input;
+    const std::string input = inputName(options);
 
     osg::ref_ptr<osg::Node> scene = loadScene(options);
     OffscreenRenderer renderer(options.width, options.height);

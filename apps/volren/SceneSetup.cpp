@@ -1,5 +1,6 @@
 #include "SceneSetup.h"
 #include "Commands.h"
+#include "DefaultSceneText.h"
 
 #include <volume_model/DefaultScene.h>
 #include <volume_model/ReadVolume.h>
@@ -16,6 +17,7 @@
 #include <volume_renderer/Slots.h>
 
 #include <cmath>
+#include <functional>
 #include <iomanip>
 #include <sstream>
 
@@ -65,31 +67,49 @@ private:
 
 }  // namespace
 
-std::string defaultInput()
+std::string inputName(const RenderOptions& options)
 {
-    return osgDB::concatPaths(shareDirectory(), "data/ch2.nii.gz");
+    return options.input.empty() ? std::string("the default scene (scenes/default.osgt)") : options.input;
 }
+
+namespace {
+
+/// Reads a scene with `read`, turning what OSG's parser only warns about into an error.
+osg::ref_ptr<osg::Node> readScene(const std::function<osgDB::ReaderWriter::ReadResult()>& read, const std::string& name)
+{
+    osg::ref_ptr<ParserWarnings> warnings = new ParserWarnings;
+    osg::setNotifyHandler(warnings.get());
+    osgDB::ReaderWriter::ReadResult result = read();
+    osg::setNotifyHandler(warnings->previous());
+    if (!result.validNode() || !warnings->collected.empty()) {
+        const std::string why = !warnings->collected.empty() ? warnings->collected
+                                : !result.message().empty()  ? result.message()
+                                                             : "no reader for this file type, or the file is invalid";
+        throw std::runtime_error(name + ": cannot read scene: " + why);
+    }
+    return result.getNode();
+}
+
+}  // namespace
 
 osg::ref_ptr<VolumeScene> loadScene(const RenderOptions& options)
 {
     registerPluginPath();
-    const std::string input = options.input.empty() ? defaultInput() : options.input;
+    const std::string input = options.input;
     osg::ref_ptr<osg::Node> scene;
-    if (isVolumeFile(input)) {
+    if (input.empty()) {
+        // The compiled-in scenes/default.osgt; its relative file names resolve in share/volren/data.
+        osg::ref_ptr<osgDB::Options> where = new osgDB::Options;
+        where->getDatabasePathList().push_back(osgDB::concatPaths(shareDirectory(), "data"));
+        osgDB::ReaderWriter* osgt = osgDB::Registry::instance()->getReaderWriterForExtension("osgt");
+        if (!osgt) throw std::runtime_error("OSG's osgt plugin (osgdb_osg) is missing");
+        std::istringstream text(defaultSceneText());
+        scene = readScene([&] { return osgt->readNode(text, where.get()); }, inputName(options));
+    } else if (isVolumeFile(input)) {
         scene = makeDefaultScene(readVolumeWithProgress(input).get());
     } else {
         if (!osgDB::fileExists(input)) throw std::runtime_error(input + ": no such file");
-        osg::ref_ptr<ParserWarnings> warnings = new ParserWarnings;
-        osg::setNotifyHandler(warnings.get());
-        osgDB::ReaderWriter::ReadResult result = osgDB::Registry::instance()->readNode(input, nullptr);
-        osg::setNotifyHandler(warnings->previous());
-        if (!result.validNode() || !warnings->collected.empty()) {
-            const std::string why = !warnings->collected.empty() ? warnings->collected
-                                    : !result.message().empty()  ? result.message()
-                                                                 : "no reader for this file type, or the file is invalid";
-            throw std::runtime_error(input + ": cannot read scene: " + why);
-        }
-        scene = result.getNode();
+        scene = readScene([&] { return osgDB::Registry::instance()->readNode(input, nullptr); }, input);
     }
 
     osg::ref_ptr<VolumeScene> root = dynamic_cast<VolumeScene*>(scene.get());

@@ -8,10 +8,11 @@
 
 namespace volren::app {
 
-/// Path of the embedded default volume (share/volren/data/ch2.nii.gz).
-std::string defaultInput();
+/// INPUT as messages name it ("the default scene (scenes/default.osgt)" when there is none).
+std::string inputName(const RenderOptions& options);
 
-/// Loads INPUT (a scene file, or a bare volume file that gets the default scene) under a
+/// Loads INPUT (a scene file, a bare volume file that gets the default scene, or nothing: the
+/// compiled-in scenes/default.osgt) under a
 /// VolumeScene, then applies --tf and --set (pass settings to the VolumeScene, the others to
 /// every VolumeNode, implementation names checked against the registry); throws
 /// std::runtime_error / UsageError naming the file or setting.

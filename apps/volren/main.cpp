@@ -18,6 +18,7 @@ const char* const usage =
     "                [--set KEY=VALUE ...] [--frames N] [--stats FILE.json]\n"
     "  volren info VOLUMEFILE          dims, type, spacing, value range, histogram\n"
     "  volren convert IN OUT [--encoding raw|gzip]   read any volume file, write e.g. OUT.nrrd\n"
+    "                                (OUT.osgt/.osgb/.osgx: the volume's default scene)\n"
     "  volren view [INPUT] [options]   interactive window (needs a display)\n"
     "  volren shader [INPUT] [--set KEY=VALUE ...]   print each volume's composed ray caster\n"
     "  volren permutations [--list] [--compile | --render] [--pairwise] [--max-instances N]\n"

@@ -70,6 +70,30 @@ TEST(VolrenCli, NoArgumentsRendersTheDefaultSceneToVolrenPng)
     EXPECT_GT(img.at(256, 256, 0), 0.2f);
     for (auto [x, y] : {std::pair{0, 0}, {511, 0}, {0, 511}, {511, 511}})
         for (int c = 0; c < 3; ++c) EXPECT_EQ(img.at(x, y, c), 0.0f);
+    // scenes/default.osgt (compiled in) is the default scene of the head it names.
+    const CliRun bare = volren("render '" + std::string(VOLREN_BINARY_DIR) + "/share/volren/data/ch2.nii.gz' -o bare.png", dir);
+    ASSERT_EQ(bare.exitCode, 0) << bare.output;
+    EXPECT_EQ(readImage(dir + "/bare.png").pixels, img.pixels);
+}
+
+TEST(VolrenCli, ConvertToASceneFileWritesTheVolumesDefaultScene)
+{
+    VOLREN_REQUIRE_SHARED_DATA();
+    const std::string dir = tempDirectory();
+    const std::string volume = sharedData("mri/HeadMRVolume.mhd");
+    for (const char* ext : {"osgt", "osgb"}) {
+        const std::string scene = dir + "/head." + ext;
+        CliRun run = volren("convert '" + volume + "' '" + scene + "'");
+        ASSERT_EQ(run.exitCode, 0) << run.output;
+        EXPECT_NE(run.output.find("(default scene; 48 x 62 x 42 uint8"), std::string::npos) << run.output;
+        run = volren("render '" + scene + "' -o '" + dir + "/scene.png' --size 64x64");
+        ASSERT_EQ(run.exitCode, 0) << run.output;
+        run = volren("render '" + volume + "' -o '" + dir + "/bare.png' --size 64x64");
+        ASSERT_EQ(run.exitCode, 0) << run.output;
+        const Image fromScene = readImage(dir + "/scene.png");
+        ASSERT_EQ(fromScene.width, 64);
+        EXPECT_EQ(fromScene.pixels, readImage(dir + "/bare.png").pixels) << ext;
+    }
 }
 
 TEST(VolrenCli, ParaViewPresetIsFittedToTheDataRangeUnlessKeptAsIs)

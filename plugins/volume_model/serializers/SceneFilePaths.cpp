@@ -1,5 +1,7 @@
 #include "SceneFilePaths.h"
 
+#include <volume_model/ReadVolume.h>
+
 #include <osgDB/FileNameUtils>
 #include <osgDB/FileUtils>
 
@@ -52,7 +54,11 @@ std::string resolveFromScene(const std::string& path, const osgDB::Options* opti
     // Next to the scene first (findDataFile may prefer a same-named file in the working directory).
     const std::string beside = osgDB::concatPaths(sceneFolder(options), path);
     if (osgDB::fileExists(beside)) return normalised(beside).string();
-    const std::string found = osgDB::findDataFile(path, options);
+    std::string found = osgDB::findDataFile(path, options);
+    if (found.empty()) {  // volren's own data (the default scene's head)
+        const std::string shared = osgDB::concatPaths(osgDB::concatPaths(shareDirectory(), "data"), path);
+        if (osgDB::fileExists(shared)) found = shared;
+    }
     return found.empty() ? found : normalised(found).string();
 }
 
