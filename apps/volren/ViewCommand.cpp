@@ -30,12 +30,8 @@ int viewCommand(const std::vector<std::string>& args)
     viewer.getCamera()->setClearColor(osg::Vec4(options.background, 1.0f));
     viewer.realize();
     if (!viewer.isRealized()) throw std::runtime_error("volren view: cannot open a window on display " + std::string(display));
-    osgViewer::ViewerBase::Contexts contexts;
-    viewer.getContexts(contexts);
-    for (osg::GraphicsContext* gc : contexts) {
-        gc->getState()->setUseModelViewAndProjectionUniforms(true);
-        gc->getState()->setUseVertexAttributeAliasing(true);
-    }
+    // OSG's default state (fixed-function matrices and vertex arrays), as in any OSG viewer: the
+    // volume proxies feed their own matrix, and polygon models keep their normals and colours.
     std::cout << "volren view: 's' shows frame times, 'c' saves a screenshot, Esc quits" << std::endl;
     return viewer.run();
 }

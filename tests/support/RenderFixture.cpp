@@ -1,5 +1,7 @@
 #include "RenderFixture.h"
 
+#include <volume_renderer/MatrixUniforms.h>
+
 #include <osg/Geode>
 #include <osg/Geometry>
 
@@ -64,9 +66,10 @@ osg::ref_ptr<osg::Node> RenderFixture::flatSquare(const osg::Vec3& centre, float
     square->setUseVertexArrayObject(true);
     square->setVertexArray(corners.get());
     square->addPrimitiveSet(new osg::DrawArrays(GL_TRIANGLE_FAN, 0, 4));
+    square->setDrawCallback(new MatrixUniforms);  // compatibility contexts: OSG sets no osg_ matrices
     osg::ref_ptr<osg::Program> program = new osg::Program;
     program->addShader(new osg::Shader(osg::Shader::VERTEX, "#version 430 core\n"
-                                                            "in vec4 osg_Vertex;\n"
+                                                            "layout(location = 0) in vec4 osg_Vertex;\n"
                                                             "uniform mat4 osg_ModelViewProjectionMatrix;\n"
                                                             "void main() { gl_Position = osg_ModelViewProjectionMatrix * osg_Vertex; }\n"));
     program->addShader(new osg::Shader(osg::Shader::FRAGMENT, "#version 430 core\n"

@@ -1,4 +1,4 @@
-#include "MatrixUniforms.h"
+#include <volume_renderer/MatrixUniforms.h>
 
 #include <osg/GLExtensions>
 #include <osg/Program>

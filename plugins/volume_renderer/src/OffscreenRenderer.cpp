@@ -116,9 +116,13 @@ OffscreenRenderer::OffscreenRenderer(int width, int height) : _width(width), _he
 
     osg::Camera* cam = _viewer->getCamera();
     osg::State* state = cam->getGraphicsContext()->getState();
-    // GLSL written for core profiles: OSG feeds osg_Vertex and the osg_*Matrix uniforms.
-    state->setUseModelViewAndProjectionUniforms(true);
-    state->setUseVertexAttributeAliasing(true);
+    // A core profile needs OSG to feed osg_Vertex and the osg_*Matrix uniforms. A compatibility
+    // context keeps OSG's defaults, as stock viewers do, so that fixed-function polygon models get
+    // their normals and colours; the volume proxies feed their own matrix then (MatrixUniforms).
+    if (_context->coreProfile()) {
+        state->setUseModelViewAndProjectionUniforms(true);
+        state->setUseVertexAttributeAliasing(true);
+    }
 
     _image = new osg::Image;
     _image->allocateImage(width, height, 1, GL_RGBA, GL_FLOAT);

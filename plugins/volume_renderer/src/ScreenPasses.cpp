@@ -175,7 +175,8 @@ osg::StateSet* ScreenPasses::entryState(osgUtil::CullVisitor& cv, const void* ke
         _entryProgram->addShader(new osg::Shader(osg::Shader::FRAGMENT, readShader("RaySetup/rasterised_entry.frag")));
     }
     Entry& e = _entries[{_camera, key}];
-    if (!e.geometry || e.geometry->getVertexArray() != box.getVertexArray() || e.boxSize != boxSize) {
+    if (!e.geometry || e.geometry->getVertexArray() != box.getVertexArray() || e.boxSize != boxSize ||
+        e.geometry->getUseVertexArrayObject() != box.getUseVertexArrayObject()) {
         e.geometry = new osg::Geometry(box, osg::CopyOp::SHALLOW_COPY);  // same vertices and faces
         e.boxSize = boxSize;
         osg::ref_ptr<osg::StateSet> faces = new osg::StateSet;  // front faces, no colour or depth

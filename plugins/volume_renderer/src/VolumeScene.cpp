@@ -1,4 +1,4 @@
-#include "MatrixUniforms.h"
+#include <volume_renderer/MatrixUniforms.h>
 
 #include <volume_renderer/Slots.h>
 #include <volume_renderer/VolumeScene.h>
@@ -119,8 +119,7 @@ osg::ref_ptr<osg::Geometry> makeBoxGeometry(const osg::Vec3d& size)
     osg::ref_ptr<osg::Geometry> geometry = new osg::Geometry;
     geometry->setName("volren volume proxy");
     geometry->setUseDisplayList(false);
-    geometry->setUseVertexBufferObjects(true);
-    geometry->setUseVertexArrayObject(true);  // core profiles draw nothing without a bound VAO
+    geometry->setUseVertexBufferObjects(false);  // buffer objects and a VAO only in core profiles (traverse)
     geometry->setVertexArray(corners.get());
     geometry->addPrimitiveSet(new osg::DrawElementsUShort(GL_TRIANGLES, 36, faces));
     geometry->setDrawCallback(new MatrixUniforms);  // for viewers whose State sets no osg_ matrices
@@ -435,6 +434,16 @@ void VolumeScene::traverse(osg::NodeVisitor& nv)
             continue;
         }
         proxy->lastCull = _cullCount;
+        // A core profile needs buffer objects and a vertex array object. A compatibility context
+        // gets plain client arrays, as OSG 3.6 mishandles both there: display-list models drawn
+        // after a VAO drawable vanish from the next frame on, and a new scene's first frame can draw
+        // a proxy from a reused orphaned buffer object of the scene before (nothing shows).
+        // OSG's attribute aliasing, which a core profile needs, tells the two apart.
+        const bool core = cv->getState() && cv->getState()->getUseVertexAttributeAliasing();
+        if (proxy->geometry->getUseVertexArrayObject() != core) {
+            proxy->geometry->setUseVertexBufferObjects(core);
+            proxy->geometry->setUseVertexArrayObject(core);
+        }
         proxy->transform->setMatrix(matrix);
         keys.insert(proxy->key);
         // Per-camera screen data of the composition: bound by state pushed around the proxy.

@@ -3,7 +3,7 @@
 
 namespace volren {
 
-/// Draw callback for the volume proxies: feeds `osg_ModelViewProjectionMatrix` to the current
+/// Draw callback for GLSL drawables (the volume proxies, and any of yours): feeds `osg_ModelViewProjectionMatrix` to the current
 /// program when the context's osg::State does not (OSG's uniform mode is off, as in stock
 /// `osgviewer` and most applications with a compatibility context). volren's own contexts turn
 /// the uniform mode on; then this callback only draws. The shaders read the vertex from
