@@ -15,6 +15,7 @@ packages=(
   libgtest-dev libgmock-dev nlohmann-json3-dev libgdcm-dev libgdcm-tools
   libegl-dev libegl-mesa0 libgl-dev libgl1-mesa-dri libgbm1
   mricron-data
+  xvfb xauth netpbm
 )
 
 # The fuzzers (tests/fuzz, optional) need clang and its libFuzzer runtime: VOLREN_SETUP_FUZZ=1.

@@ -262,8 +262,20 @@ bool readRescale(osgDB::InputStream& is, Volume& volume)
 
 }  // namespace
 
+/// A Volume needs its voxels from somewhere: a scene that names neither a file nor voxels fails.
+struct RequireVoxels : osgDB::FinishedObjectReadCallback
+{
+    void objectRead(osgDB::InputStream& is, osg::Object& object) override
+    {
+        if (is.getException()) return;
+        if (static_cast<Volume&>(object).voxelCount() == 0)
+            fail(is, "volren::Volume '" + object.getName() + "': no SourceFile and no Voxels (an empty volume)");
+    }
+};
+
 REGISTER_OBJECT_WRAPPER(volren_Volume, new volren::Volume, volren::Volume, "osg::Object volren::Volume")
 {
+    wrapper->addFinishedObjectReadCallback(new RequireVoxels);
     // Voxels before SourceFile: embedded voxels win, and the file is then not read.
     wrapper->addSerializer(new StreamSerializer<Volume>("Voxels", &checkVoxels, &readVoxels, &writeVoxels),
                            osgDB::BaseSerializer::RW_USER);
