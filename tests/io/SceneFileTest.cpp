@@ -472,6 +472,12 @@ TEST_F(SceneFileBad, MissingVolumeFileFailsNamingIt)
     }
 }
 
+TEST_F(SceneFileBad, VolumeWithNeitherFileNorVoxelsFails)
+{
+    const std::string message = expectSceneReadError(edited("SourceFile \"data/head.nrrd\"", ""));
+    EXPECT_NE(message.find("no SourceFile and no Voxels"), std::string::npos) << message;
+}
+
 TEST_F(SceneFileBad, UnreadableVolumeFileFailsWithTheReadersReason)
 {
     writeText(dir + "/data/head.nrrd", "NRRD0004\ntype: banana\n\n");

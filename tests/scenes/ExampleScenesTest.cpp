@@ -1,6 +1,6 @@
 // Every scene in scenes/ loads through OSG's own reader without a warning, renders headlessly
 // with the volumes and the polygon models it is made of visible, and renders identically after a
-// round trip through .osgb. (Compatibility profile only, like stock OSG viewers: the polygon
+// round trip through .osgb, and after stock osgconv to .osgb and back to .osgt. (Compatibility profile only, like stock OSG viewers: the polygon
 // models are fixed-function.)
 #include "RenderFixture.h"
 #include "TestData.h"
@@ -14,6 +14,7 @@
 #include <osgDB/WriteFile>
 
 #include <algorithm>
+#include <cstdlib>
 #include <functional>
 #include <map>
 #include <unistd.h>
@@ -107,7 +108,7 @@ TEST_F(ExampleScenes, EveryExpectedSceneIsThere)
         EXPECT_NE(std::find(found.begin(), found.end(), name), found.end()) << name << " is missing from scenes/";
 }
 
-TEST_F(ExampleScenes, LoadWithoutWarningsRenderWhatTheyHoldAndSurviveOsgb)
+TEST_F(ExampleScenes, LoadWithoutWarningsRenderWhatTheyHoldAndSurviveOsgbAndOsgconv)
 {
     VOLREN_REQUIRE_SHARED_DATA();
     registerPluginPath();
@@ -150,6 +151,22 @@ TEST_F(ExampleScenes, LoadWithoutWarningsRenderWhatTheyHoldAndSurviveOsgb)
         int differing = 0;
         for (std::size_t i = 0; i < image.rgba.size(); ++i) differing += again.rgba[i] != image.rgba[i];
         EXPECT_EQ(differing, 0) << "pixels that differ after the .osgb round trip";
+
+        // Debian's stock osgconv (which also runs OSG's optimizer) to .osgb and back to .osgt.
+        const std::string env = "OSG_LIBRARY_PATH='" + std::string(VOLREN_BINARY_DIR) + "/lib' ";
+        const std::string viaOsgb = dir + "/checkout/scenes/osgconv-" + osgDB::getNameLessExtension(name);
+        ASSERT_EQ(std::system((env + "osgconv '" + osgDB::concatPaths(sceneFolder, name) + "' '" + viaOsgb +
+                               ".osgb' >/dev/null 2>&1 && " + env + "osgconv '" + viaOsgb + ".osgb' '" + viaOsgb +
+                               ".osgt' >/dev/null 2>&1").c_str()),
+                  0)
+            << "osgconv failed";
+        osg::ref_ptr<osg::Node> converted = osgDB::readRefNodeFile(viaOsgb + ".osgt");
+        ASSERT_TRUE(converted) << "the osgconv copy does not load";
+        renderFramed(converted.get(), size);
+        const Pixels fromOsgconv = renderFramed(converted.get(), size);
+        differing = 0;
+        for (std::size_t i = 0; i < image.rgba.size(); ++i) differing += fromOsgconv.rgba[i] != image.rgba[i];
+        EXPECT_EQ(differing, 0) << "pixels that differ after osgconv to .osgb and back to .osgt";
     }
 }
 
