@@ -1,4 +1,5 @@
 #include "DicomSeriesScan.h"
+#include "DicomStructure.h"
 
 #include <volume_model/ParseNumber.h>
 
@@ -102,6 +103,8 @@ std::vector<DicomSlice> findSeries(const std::string& path, const std::string& s
     std::string wanted = seriesUid;
     std::string dir = path;
     if (!isDirectory) {
+        if (const std::string problem = structureProblem(path); !problem.empty())
+            throw std::runtime_error(path + ": malformed DICOM file: " + problem);
         gdcm::Scanner single = makeScanner();
         if (!single.Scan({path}) || !single.IsKey(path.c_str())) throw std::runtime_error(path + ": not a DICOM file");
         const DicomSlice own = sliceOf(single, path);
@@ -111,6 +114,11 @@ std::vector<DicomSlice> findSeries(const std::string& path, const std::string& s
     }
 
     const std::vector<std::string> files = filesIn(dir);
+    // GDCM would abort the process on some malformed files: check them before it sees them. A
+    // broken slice fails the whole read (skipping it would leave a gap in the volume).
+    for (const std::string& f : files)
+        if (const std::string problem = structureProblem(f); !problem.empty())
+            throw std::runtime_error(f + ": malformed DICOM file: " + problem);
     gdcm::Scanner scanner = makeScanner();
     if (!files.empty() && !scanner.Scan(files)) throw std::runtime_error(path + ": scanning the DICOM files failed");
     std::map<std::string, std::vector<DicomSlice>> series;
