@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 namespace volren::test {
@@ -73,6 +74,62 @@ TEST(PvmReader, Pvm3WithTrailingDescriptionStrings)
     for (int i = 0; i < 60; ++i) ASSERT_EQ(v->value(std::size_t(i)), double((i * 7 + 3) & 0xff)) << i;
 }
 
+// --- DDS-compressed files, encoded by the V^3 library's own writer (tests/io/data/pvm-dds) ---
+
+std::string ddsFile(const std::string& name)
+{
+    return std::string(VOLREN_SOURCE_DIR) + "/tests/io/data/pvm-dds/" + name;
+}
+
+TEST(PvmReader, DdsV3dEightBitDecodesToTheEncodedVoxels)
+{
+    osg::ref_ptr<Volume> v = readVolumeFile(ddsFile("v3d-uint8-37x23x11.pvm"));
+    ASSERT_EQ(v->dims(), osg::Vec3i(37, 23, 11));
+    EXPECT_EQ(v->type(), VoxelType::UInt8);
+    for (int z = 0; z < 11; ++z)
+        for (int y = 0; y < 23; ++y)
+            for (int x = 0; x < 37; ++x)
+                ASSERT_EQ(v->value(x, y, z), double((7 * x + 13 * y + 29 * z + (x * y) % 11) % 256)) << x << "," << y << "," << z;
+}
+
+TEST(PvmReader, DdsV3dSixteenBitUndoesTheByteInterleaving)
+{
+    osg::ref_ptr<Volume> v = readVolumeFile(ddsFile("v3d-uint16-19x17x5.pvm"));
+    ASSERT_EQ(v->dims(), osg::Vec3i(19, 17, 5));
+    EXPECT_EQ(v->type(), VoxelType::UInt16);
+    EXPECT_EQ(v->spacing(), osg::Vec3d(0.5, 0.25, 2.0));
+    for (int z = 0; z < 5; ++z)
+        for (int y = 0; y < 17; ++y)
+            for (int x = 0; x < 19; ++x)
+                ASSERT_EQ(v->value(x, y, z), double((1000 * x + 37 * y + 4001 * z + (x * y * z) % 97) % 65536))
+                    << x << "," << y << "," << z;
+}
+
+TEST(PvmReader, DdsPvm3KeepsItsSpacingAndStrings)
+{
+    osg::ref_ptr<Volume> v = readVolumeFile(ddsFile("v3d-pvm3-9x8x7.pvm"));
+    ASSERT_EQ(v->dims(), osg::Vec3i(9, 8, 7));
+    EXPECT_EQ(v->spacing(), osg::Vec3d(1, 1, 3.5));
+    for (int z = 0; z < 7; ++z)
+        for (int y = 0; y < 8; ++y)
+            for (int x = 0; x < 9; ++x) ASSERT_EQ(v->value(x, y, z), double((x * x + 3 * y + 50 * z) % 256));
+}
+
+TEST(PvmReader, DdsV3eLargerThanOneInterleaveBlockDecodesExactly)
+{
+    // 256 x 256 x 129 x 2 bytes = 16.9 MB: more than one 2^24-byte block, so both the full-block
+    // and the remainder de-interleaving run.
+    osg::ref_ptr<Volume> v = readVolumeFile(ddsFile("v3e-uint16-256x256x129.pvm"));
+    ASSERT_EQ(v->dims(), osg::Vec3i(256, 256, 129));
+    EXPECT_EQ(v->type(), VoxelType::UInt16);
+    EXPECT_EQ(v->spacing(), osg::Vec3d(1, 1, 1.5));
+    std::size_t wrong = 0;
+    for (int z = 0; z < 129; ++z)
+        for (int y = 0; y < 256; ++y)
+            for (int x = 0; x < 256; ++x) wrong += v->value(x, y, z) != double((3 * x + 257 * y + 499 * z) % 65536);
+    EXPECT_EQ(wrong, 0u);
+}
+
 TEST(PvmReader, BadFilesAreRejectedWithFileAndReason)
 {
     const std::string dir = tempDirectory();
@@ -95,8 +152,12 @@ TEST(PvmReader, BadFilesAreRejectedWithFileAndReason)
     check("count.pvm", "PVM\n5 4\n1\n", "expected 3 numbers");
     check("spacing.pvm", "PVM2\n5 4 3\n1 0 1\n1\n" + bytes8(), "spacing 0");
     check("rgb.pvm", "PVM\n5 4 3\n3\n" + bytes8() + bytes8() + bytes8(), "unsupported PVM voxel size 3");
-    check("dds.pvm", "DDS v3d\n\x01\x02\x03", "DDS-compressed PVM");
-    check("dds3e.pvm", "DDS v3e\n\x01\x02\x03", "not supported yet");
+    check("dds.pvm", std::string("DDS v3d\n\xff\xff\xff", 11), "truncated DDS stream");
+    check("dds-empty.pvm", std::string("DDS v3e\n\x00\x00\x00\x00", 12), "empty DDS stream");
+    // A valid stream cut short: the decoder notices reading past the end.
+    std::ifstream whole(ddsFile("v3d-uint8-37x23x11.pvm"), std::ios::binary);
+    const std::string dds((std::istreambuf_iterator<char>(whole)), std::istreambuf_iterator<char>());
+    check("dds-cut.pvm", dds.substr(0, dds.size() / 2), "truncated DDS stream");
     const std::string missing = dir + "/nope.pvm";
     EXPECT_NE(expectReadError(missing).find(missing + ": no such file"), std::string::npos);
 }

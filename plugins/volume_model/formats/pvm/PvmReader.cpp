@@ -1,4 +1,5 @@
 #include "PvmReader.h"
+#include "DdsDecoder.h"
 
 #include <volume_model/ParseNumber.h>
 
@@ -12,6 +13,9 @@
 namespace volren::pvm {
 
 namespace {
+
+/// Largest decoded DDS stream accepted (64 GiB).
+constexpr std::uint64_t maxDecodedBytes = std::uint64_t(1) << 36;
 
 /// Longest header line accepted; a PVM header is a few short text lines.
 constexpr std::size_t maxLineLength = 4096;
@@ -91,13 +95,11 @@ void logTrailingStrings(const std::vector<std::uint8_t>& bytes, std::size_t from
 
 osg::ref_ptr<Volume> readPvm(const std::vector<std::uint8_t>& bytes, const std::string& name)
 {
-    auto startsWith = [&bytes](const char* magic) {
-        const std::size_t n = std::strlen(magic);
-        return bytes.size() >= n && std::memcmp(bytes.data(), magic, n) == 0;
-    };
-    if (startsWith("DDS v3d\n") || startsWith("DDS v3e\n"))
-        throw std::runtime_error(name + ": DDS-compressed PVM (" + std::string(bytes.begin(), bytes.begin() + 7) +
-                                 ") is not supported yet; store it uncompressed");
+    if (isDds(bytes)) {  // compressed: the DDS stream holds a whole uncompressed PVM file
+        const std::vector<std::uint8_t> plain = decodeDds(bytes, name, maxDecodedBytes);
+        if (isDds(plain)) throw std::runtime_error(name + ": DDS stream inside a DDS stream");
+        return readPvm(plain, name);
+    }
 
     HeaderCursor header(bytes, name);
     const std::string magic = header.line("the magic line");
