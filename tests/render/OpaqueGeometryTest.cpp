@@ -50,6 +50,36 @@ TEST_F(OpaqueGeometry, SquareInsideIsAttenuatedByTheMediumInFrontOfItOrthographi
     }
 }
 
+TEST_F(OpaqueGeometry, SphereAtTheCentreIsAttenuatedByTheMediumInFrontOfEachPixelAndKeepsItsSilhouette)
+{
+    // Orthographic from +z: at distance r from the axis the sphere's front lies at
+    // z = sqrt(R^2 - r^2), so the light from it crosses n/2 - z of the medium.
+    const double radius = 5.0;
+    osg::ref_ptr<VolumeScene> scene = sceneWith(flatSphere({0, 0, 0}, float(radius), osg::Vec4(1, 1, 1, 1)).get());
+    const int size = 64;
+    const double view = 20.0;  // world units across
+    const Pixels img = renderOrthoFromPlusZ(scene.get(), size, size, view);
+    int inside = 0, outside = 0;
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            const double px = (x + 0.5) * view / size - view / 2, py = (y + 0.5) * view / size - view / 2;
+            const double r = std::sqrt(px * px + py * py);
+            const double pixel = view / size;
+            if (r < radius - pixel) {
+                const double front = std::sqrt(radius * radius - r * r);
+                ASSERT_NEAR(img.at(x, y).g(), transmittance(n / 2.0 - front), 2e-3) << x << "," << y << " r " << r;
+                ASSERT_NEAR(img.at(x, y).a(), 1.0, 1e-6);
+                ++inside;
+            } else if (r > radius + pixel && std::abs(px) < n / 2.0 - pixel && std::abs(py) < n / 2.0 - pixel) {
+                ASSERT_NEAR(img.at(x, y).g(), 0.0, 1e-6) << "no sphere outside its silhouette " << x << "," << y;
+                ASSERT_NEAR(img.at(x, y).a(), 1.0 - transmittance(n), 2e-4);
+                ++outside;
+            }
+        }
+    EXPECT_GT(inside, 600);
+    EXPECT_GT(outside, 1000);
+}
+
 TEST_F(OpaqueGeometry, SquareBehindIsAttenuatedByTheWholeBoxAndInFrontNotAtAll)
 {
     osg::ref_ptr<VolumeScene> behind = sceneWith(flatSquare({0, 0, -12.0f}, 4.0f, osg::Vec4(1, 0.5f, 0.25f, 1)).get());

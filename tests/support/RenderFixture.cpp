@@ -3,6 +3,7 @@
 #include <volume_renderer/MatrixUniforms.h>
 
 #include <osg/Geode>
+#include <osg/ShapeDrawable>
 #include <osg/Geometry>
 
 #include <memory>
@@ -55,18 +56,16 @@ Pixels RenderFixture::renderOrthoFromPlusZ(osg::Node* scene, int width, int heig
     return render(scene, width, height, view, projection, background);
 }
 
-osg::ref_ptr<osg::Node> RenderFixture::flatSquare(const osg::Vec3& centre, float halfSize, const osg::Vec4& colour)
+namespace {
+
+/// Draws `geometry` in one flat colour with a GLSL program, the same in compatibility and core
+/// profiles (vertex from attribute 0; MatrixUniforms feeds the matrix where OSG does not).
+osg::ref_ptr<osg::Node> flatColoured(osg::Geometry* geometry, const osg::Vec4& colour)
 {
-    osg::ref_ptr<osg::Vec3Array> corners = new osg::Vec3Array;
-    for (const osg::Vec2 c : {osg::Vec2(-1, -1), osg::Vec2(1, -1), osg::Vec2(1, 1), osg::Vec2(-1, 1)})
-        corners->push_back(centre + osg::Vec3(c.x(), c.y(), 0.0f) * halfSize);
-    osg::ref_ptr<osg::Geometry> square = new osg::Geometry;
-    square->setUseDisplayList(false);
-    square->setUseVertexBufferObjects(true);
-    square->setUseVertexArrayObject(true);
-    square->setVertexArray(corners.get());
-    square->addPrimitiveSet(new osg::DrawArrays(GL_TRIANGLE_FAN, 0, 4));
-    square->setDrawCallback(new MatrixUniforms);  // compatibility contexts: OSG sets no osg_ matrices
+    geometry->setUseDisplayList(false);
+    geometry->setUseVertexBufferObjects(true);
+    geometry->setUseVertexArrayObject(true);
+    geometry->setDrawCallback(new MatrixUniforms);
     osg::ref_ptr<osg::Program> program = new osg::Program;
     program->addShader(new osg::Shader(osg::Shader::VERTEX, "#version 430 core\n"
                                                             "layout(location = 0) in vec4 osg_Vertex;\n"
@@ -77,13 +76,34 @@ osg::ref_ptr<osg::Node> RenderFixture::flatSquare(const osg::Vec3& centre, float
                                                               "out vec4 fragColour;\n"
                                                               "void main() { fragColour = colour; }\n"));
     program->addBindFragDataLocation("fragColour", 0);
-    osg::StateSet* ss = square->getOrCreateStateSet();
+    osg::StateSet* ss = geometry->getOrCreateStateSet();
     ss->setAttributeAndModes(program.get(), osg::StateAttribute::ON);
     ss->addUniform(new osg::Uniform("colour", colour));
     ss->setMode(GL_CULL_FACE, osg::StateAttribute::OFF);
     osg::ref_ptr<osg::Geode> geode = new osg::Geode;
-    geode->addDrawable(square.get());
+    geode->addDrawable(geometry);
     return geode;
+}
+
+}  // namespace
+
+osg::ref_ptr<osg::Node> RenderFixture::flatSquare(const osg::Vec3& centre, float halfSize, const osg::Vec4& colour)
+{
+    osg::ref_ptr<osg::Vec3Array> corners = new osg::Vec3Array;
+    for (const osg::Vec2 c : {osg::Vec2(-1, -1), osg::Vec2(1, -1), osg::Vec2(1, 1), osg::Vec2(-1, 1)})
+        corners->push_back(centre + osg::Vec3(c.x(), c.y(), 0.0f) * halfSize);
+    osg::ref_ptr<osg::Geometry> square = new osg::Geometry;
+    square->setVertexArray(corners.get());
+    square->addPrimitiveSet(new osg::DrawArrays(GL_TRIANGLE_FAN, 0, 4));
+    return flatColoured(square.get(), colour);
+}
+
+osg::ref_ptr<osg::Node> RenderFixture::flatSphere(const osg::Vec3& centre, float radius, const osg::Vec4& colour)
+{
+    osg::ref_ptr<osg::TessellationHints> hints = new osg::TessellationHints;
+    hints->setDetailRatio(12.0f);  // fine: the facets stay within 1e-3 of the true sphere
+    osg::ref_ptr<osg::ShapeDrawable> sphere = new osg::ShapeDrawable(new osg::Sphere(centre, radius), hints.get());
+    return flatColoured(sphere.get(), colour);
 }
 
 osg::ref_ptr<VolumeNode> RenderFixture::volumeNode(Volume* volume, TransferFunction* tf, bool jitter)

@@ -37,6 +37,8 @@ public:
     /// An opaque square of `colour` in the plane z = centre.z, 2 * halfSize wide, drawn with a
     /// flat-colour program (so it looks the same in compatibility and core profiles).
     static osg::ref_ptr<osg::Node> flatSquare(const osg::Vec3& centre, float halfSize, const osg::Vec4& colour);
+    /// An opaque sphere (finely tessellated ShapeDrawable) of `colour`, drawn like flatSquare.
+    static osg::ref_ptr<osg::Node> flatSphere(const osg::Vec3& centre, float radius, const osg::Vec4& colour);
 
     /// A VolumeNode showing `volume` through `tf`, jitter off unless asked.
     static osg::ref_ptr<VolumeNode> volumeNode(Volume* volume, TransferFunction* tf, bool jitter = false);
