@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Renders every example scene in scenes/ to docs/images/scene-NAME.png (the README's pictures).
+# Renders every example scene in scenes/ to docs/images/scene-NAME.png, and the scenes of
+# docs/scenes/ (known limitations) to docs/images/limitation-NAME.png: the README's pictures.
 # Usage: tools/render-scenes.sh [SIZE]   (default 480x360; needs a build and ../shared/data)
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -20,4 +21,8 @@ for scene in "$here"/scenes/*.osgt; do
   name=$(basename "$scene" .osgt)
   # shellcheck disable=SC2046
   "$volren" render "$scene" -o "$here/docs/images/scene-$name.png" --size "$size" --background 0.08,0.08,0.1 $(view "$name")
+done
+for scene in "$here"/docs/scenes/*.osgt; do
+  name=$(basename "$scene" .osgt)
+  "$volren" render "$scene" -o "$here/docs/images/limitation-$name.png" --size "$size" --background 0.08,0.08,0.1
 done

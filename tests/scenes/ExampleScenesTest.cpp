@@ -170,6 +170,26 @@ TEST_F(ExampleScenes, LoadWithoutWarningsRenderWhatTheyHoldAndSurviveOsgbAndOsgc
     }
 }
 
+TEST_F(ExampleScenes, LimitationScenesInDocsLoadAndRenderWithoutWarnings)
+{
+    VOLREN_REQUIRE_SHARED_DATA();
+    registerPluginPath();
+    const std::string folder = std::string(VOLREN_SOURCE_DIR) + "/docs/scenes";
+    int count = 0;
+    for (const std::string& f : osgDB::getDirectoryContents(folder)) {
+        if (osgDB::getLowerCaseFileExtension(f) != "osgt") continue;
+        SCOPED_TRACE(f);
+        ScopedWarnings warnings;
+        osg::ref_ptr<osg::Node> scene = osgDB::readRefNodeFile(osgDB::concatPaths(folder, f));
+        ASSERT_TRUE(scene);
+        const Pixels image = renderFramed(scene.get(), 96);
+        EXPECT_GT(std::count_if(image.rgba.begin(), image.rgba.end(), covered), 1000);
+        EXPECT_EQ(warnings.log->text, "");
+        ++count;
+    }
+    EXPECT_GE(count, 1);
+}
+
 // Known bug, disabled so the default run stays green: in a renderer that has drawn the other
 // scenes before, the first frame of two-volumes.osgt differs from its second (736 of 25600 pixels;
 // part of one of the two volumes that share a Volume is missing). It does not happen when the
