@@ -143,4 +143,9 @@ bool HeadlessContext::makeCurrent() const
                           _context) == EGL_TRUE;
 }
 
+bool HeadlessContext::release() const
+{
+    return eglMakeCurrent(_display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT) == EGL_TRUE;
+}
+
 }  // namespace volren

@@ -18,6 +18,8 @@ public:
 
     /// Makes the context current on the calling thread.
     bool makeCurrent() const;
+    /// Makes no context current on the calling thread (so another thread can take this one).
+    bool release() const;
     /// "EGL <platform>: <GL_VERSION> / <GL_RENDERER>".
     const std::string& description() const { return _description; }
     /// Whether the context is a core profile (no fixed-function fallback).
