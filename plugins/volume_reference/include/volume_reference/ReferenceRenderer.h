@@ -1,0 +1,48 @@
+#pragma once
+#include <volume_reference/ReferenceScene.h>
+
+#include <osg/Matrixd>
+#include <osg/Vec3d>
+
+#include <cstddef>
+#include <vector>
+
+namespace volren {
+
+/// A view to render: the matrices of an osg::Camera (clip = world * view * projection).
+struct ReferenceCamera
+{
+    osg::Matrixd view, projection;
+    int width = 64, height = 64;
+};
+
+/// How finely to integrate. Each ray starts with steps of `firstStep` x the smallest voxel
+/// spacing and halves them until two successive results differ by at most `tolerance` in every
+/// RGBA channel (then the finer one is kept), or the step reaches `finestStep` x that spacing.
+struct ReferenceOptions
+{
+    double tolerance = 1e-4;
+    double firstStep = 0.25;
+    double finestStep = 1.0 / 4096.0;
+    osg::Vec3d background{0.0, 0.0, 0.0};  ///< linear RGB behind the volumes
+    unsigned int threads = 0;               ///< 0: one per hardware thread
+};
+
+/// The result: RGBA in double precision, row 0 at the bottom, colour premultiplied and composited
+/// over the background, alpha the volumes' coverage (as OffscreenRenderer's image).
+struct ReferenceImage
+{
+    int width = 0, height = 0;
+    std::vector<double> rgba;
+    std::size_t unconverged = 0;  ///< rays that reached finestStep before the tolerance
+    double finestStepUsed = 0.0;  ///< smallest step any ray needed (world units)
+    double at(int x, int y, int c) const { return rgba[(std::size_t(y) * width + x) * 4 + c]; }
+};
+
+/// Renders the emission-absorption integral of `scene`'s volumes (several volumes, overlapping or
+/// not, add their media: extinction and emission sum) seen by `camera`. Rays run from the near
+/// plane to the far plane, so a camera inside a volume sees what is in front of it.
+ReferenceImage renderReference(const ReferenceScene& scene, const ReferenceCamera& camera,
+                               const ReferenceOptions& options = {});
+
+}  // namespace volren

@@ -1,0 +1,28 @@
+#pragma once
+#include <volume_model/ClipNode.h>
+#include <volume_model/VolumeNode.h>
+
+#include <osg/Matrixd>
+#include <osg/Node>
+
+#include <vector>
+
+namespace volren {
+
+/// What the reference renderer sees of a scene graph: each VolumeNode and each clip shape with
+/// its local-to-world matrix (the nodes are referenced, not copied).
+struct ReferenceScene
+{
+    struct Placed
+    {
+        osg::ref_ptr<const osg::Node> node;
+        osg::Matrixd localToWorld;
+    };
+    std::vector<Placed> volumes;  ///< VolumeNodes with a volume and a transfer function
+    std::vector<Placed> clips;    ///< ClipNodes
+
+    /// Collects the volumes and clip shapes below `root` (all children, whatever their masks).
+    static ReferenceScene collect(const osg::Node& root);
+};
+
+}  // namespace volren
