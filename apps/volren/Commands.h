@@ -8,6 +8,11 @@ namespace volren::app {
 
 /// `volren render INPUT -o OUT [...]` (and `volren` alone); returns the exit code.
 int renderCommand(const std::vector<std::string>& args, bool defaultRun);
+/// `volren reference INPUT -o OUT.exr [...]`: the CPU reference image of the same view as
+/// `volren render` (emission-absorption only); returns the exit code.
+int referenceCommand(const std::vector<std::string>& args);
+/// `volren compare A B [--threshold T] [--diff OUT]`: error measures of image A against B.
+int compareCommand(const std::vector<std::string>& args);
 /// `volren info VOLUMEFILE`; returns the exit code.
 int infoCommand(const std::vector<std::string>& args);
 /// `volren convert IN OUT [--encoding raw|gzip]`: reads any volume file, writes it through

@@ -16,6 +16,8 @@ const char* const usage =
     "                [--fov DEG | --ortho HEIGHT] [--background r,g,b]\n"
     "                [--tf FILE.tf | --tf PRESETS.json[#NAME] [--tf-keep-range]]\n"
     "                [--set KEY=VALUE ...] [--frames N] [--stats FILE.json]\n"
+    "  volren reference INPUT -o OUT.exr [render's options]   CPU reference image (the integral)\n"
+    "  volren compare A B [--threshold T] [--diff OUT]   RMSE, PSNR, max error, pixels over T\n"
     "  volren info VOLUMEFILE          dims, type, spacing, value range, histogram\n"
     "  volren convert IN OUT [--encoding raw|gzip]   read any volume file, write e.g. OUT.nrrd\n"
     "                                (OUT.osgt/.osgb/.osgx: the volume's default scene)\n"
@@ -46,6 +48,8 @@ int main(int argc, char** argv)
         if (command == "shader") return volren::app::shaderCommand(args);
         if (command == "permutations") return volren::app::permutationsCommand(args);
         if (command == "render") return volren::app::renderCommand(args, false);
+        if (command == "reference") return volren::app::referenceCommand(args);
+        if (command == "compare") return volren::app::compareCommand(args);
         if (command == "info") return volren::app::infoCommand(args);
         if (command == "convert") return volren::app::convertCommand(args);
         if (command == "view") return volren::app::viewCommand(args);

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <cmath>
 #include <fstream>
 #include <sys/wait.h>
 
@@ -74,6 +75,42 @@ TEST(VolrenCli, NoArgumentsRendersTheDefaultSceneToVolrenPng)
     const CliRun bare = volren("render '" + std::string(VOLREN_BINARY_DIR) + "/share/volren/data/ch2.nii.gz' -o bare.png", dir);
     ASSERT_EQ(bare.exitCode, 0) << bare.output;
     EXPECT_EQ(readImage(dir + "/bare.png").pixels, img.pixels);
+}
+
+TEST(VolrenCli, ReferenceAndCompareMeasureTheGpuAgainstTheIntegral)
+{
+    VOLREN_REQUIRE_SHARED_DATA();
+    const std::string dir = tempDirectory();
+    const std::string volume = sharedData("mri/HeadMRVolume.mhd");
+    const std::string view = " --size 64x64 --set lighting=off";
+    CliRun run = volren("reference '" + volume + "' -o '" + dir + "/ref.exr'" + view);
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    EXPECT_NE(run.output.find("0 rays not converged"), std::string::npos) << run.output;
+    run = volren("render '" + volume + "' -o '" + dir + "/gpu.exr'" + view + " --set jitter=null --set earlyTermination=1 --set samplerate=4");
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    const Image ref = readImage(dir + "/ref.exr"), gpu = readImage(dir + "/gpu.exr");
+    ASSERT_EQ(ref.pixels.size(), gpu.pixels.size());
+    double sumSquares = 0.0;
+    for (std::size_t i = 0; i < ref.pixels.size(); ++i) sumSquares += double(ref.pixels[i] - gpu.pixels[i]) * (ref.pixels[i] - gpu.pixels[i]);
+    const double rmse = std::sqrt(sumSquares / double(ref.pixels.size()));
+    EXPECT_LT(rmse, 1e-3);
+    EXPECT_GT(rmse, 0.0) << "two different integrators";
+
+    // compare prints the same RMSE (OpenImageIO's measure), and the difference image.
+    run = volren("compare '" + dir + "/gpu.exr' '" + dir + "/ref.exr' --diff '" + dir + "/diff.exr'");
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    const std::size_t at = run.output.find("RMSE:");
+    ASSERT_NE(at, std::string::npos) << run.output;
+    EXPECT_NEAR(std::stod(run.output.substr(at + 5)), rmse, 1e-6) << run.output;
+    const Image diff = readImage(dir + "/diff.exr");
+    ASSERT_EQ(diff.pixels.size(), ref.pixels.size());
+    for (std::size_t i = 0; i < diff.pixels.size(); i += 97) EXPECT_NEAR(diff.pixels[i], std::abs(gpu.pixels[i] - ref.pixels[i]), 1e-6);
+    run = volren("compare '" + dir + "/ref.exr' '" + dir + "/ref.exr'");
+    EXPECT_NE(run.output.find("RMSE:           0\n"), std::string::npos) << run.output;
+    run = volren("render '" + volume + "' -o '" + dir + "/small.png' --size 32x32");
+    run = volren("compare '" + dir + "/ref.exr' '" + dir + "/small.png'");
+    EXPECT_EQ(run.exitCode, 1);
+    EXPECT_NE(run.output.find(dir + "/small.png: 32x32 differs from"), std::string::npos) << run.output;
 }
 
 TEST(VolrenCli, ConvertToASceneFileWritesTheVolumesDefaultScene)
