@@ -4,6 +4,7 @@
 #include "SceneSetup.h"
 
 #include <volume_reference/ReferenceRenderer.h>
+#include <volume_renderer/OffscreenRenderer.h>
 
 #include <osg/Camera>
 #include <osg/LightSource>
@@ -41,6 +42,34 @@ int referenceCommand(const std::vector<std::string>& args)
     if (scene->get("lighting") == "on" && lights.count > 0)
         std::cerr << "volren: note: the reference renders emission and absorption only (no lights yet); compare it "
                      "with 'volren render ... --set lighting=off'" << std::endl;
+    // Opaque geometry is rasterised once for the same camera, with every volume hidden: the rays
+    // end at its depth and the volumes are composited over its colour.
+    {
+        std::vector<std::pair<osg::Node*, osg::Node::NodeMask>> hidden;
+        for (const auto& placed : content.volumes) {
+            auto* node = const_cast<osg::Node*>(placed.node.get());
+            hidden.emplace_back(node, node->getNodeMask());
+            node->setNodeMask(0);
+        }
+        OffscreenRenderer geometry(options.width, options.height);
+        geometry.setReadDepth(true);
+        geometry.setScene(scene.get());
+        geometry.setBackground(osg::Vec3(options.background));
+        geometry.camera()->setViewMatrix(view.view);
+        geometry.camera()->setProjectionMatrix(view.projection);
+        geometry.camera()->setComputeNearFarMode(osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR);
+        geometry.renderFrame();
+        for (auto& [node, mask] : hidden) node->setNodeMask(mask);
+        const auto* depth = reinterpret_cast<const float*>(geometry.depthImage()->data());
+        const auto* colour = reinterpret_cast<const float*>(geometry.image()->data());
+        const std::size_t pixels = std::size_t(options.width) * options.height;
+        bool any = false;
+        for (std::size_t i = 0; i < pixels && !any; ++i) any = depth[i] < 1.0f;
+        if (any) {
+            reference.geometryDepth.assign(depth, depth + pixels);
+            reference.geometryColour.assign(colour, colour + pixels * 4);
+        }
+    }
     const ReferenceImage image = renderReference(content, view, reference);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 

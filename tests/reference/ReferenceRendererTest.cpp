@@ -188,5 +188,49 @@ TEST_F(GpuAgainstReference, UnlitMriHeadConvergesToTheReferenceAsTheSampleRateRi
     EXPECT_LT(rmse4, 0.5 * rmse1) << "finer sampling approaches the integral";
 }
 
+TEST_F(GpuAgainstReference, OpaqueGeometryEndsTheReferenceRaysAsItEndsTheGpuRays)
+{
+    // A white square inside a homogeneous black-absorbing medium, seen in perspective. The
+    // geometry alone is rasterised once (colour and depth), the reference integrates the medium
+    // up to that depth over it; the GPU renders the whole scene. Closed form at the centre pixel:
+    // the square shows through (1 - a)^(distance through the medium).
+    const double a = 0.2;
+    osg::ref_ptr<VolumeNode> node = volumeNode(constantVolume(VoxelType::UInt8, {16, 16, 16}, 100).get(),
+                                               constantTransferFunction(osg::Vec4(0, 0, 0, float(a))).get());
+    std::string error;
+    ASSERT_TRUE(node->settings.set("earlyTermination", "1", error)) << error;
+    ASSERT_TRUE(node->settings.set("samplerate", "4", error)) << error;
+    osg::ref_ptr<osg::Node> square = flatSquare({0, 0, -2.0f}, 6.0f, osg::Vec4(1, 1, 1, 1));
+    osg::ref_ptr<VolumeScene> scene = new VolumeScene;
+    scene->addChild(node.get());
+    scene->addChild(square.get());
+
+    const int size = 40;
+    ReferenceCamera camera;
+    camera.width = camera.height = size;
+    camera.view = osg::Matrixd::lookAt(osg::Vec3d(0, 0, 30), osg::Vec3d(0, 0, 0), osg::Vec3d(0, 1, 0));
+    camera.projection = osg::Matrixd::perspective(40, 1, 5, 60);
+    const Pixels gpu = render(scene.get(), size, size, camera.view, camera.projection);
+
+    osg::ref_ptr<VolumeScene> geometryOnly = new VolumeScene;
+    geometryOnly->addChild(square.get());
+    renderer(size, size).setReadDepth(true);
+    const Pixels geometry = render(geometryOnly.get(), size, size, camera.view, camera.projection);
+    renderer(size, size).setReadDepth(false);
+    ReferenceOptions options;
+    options.geometryDepth = geometry.depth;
+    for (const osg::Vec4& p : geometry.rgba)
+        for (int c = 0; c < 4; ++c) options.geometryColour.push_back(p[c]);
+    const ReferenceImage truth = renderReference(ReferenceScene::collect(*scene), camera, options);
+
+    EXPECT_NEAR(truth.at(20, 20, 0), std::pow(1.0 - double(float(a)), 10.0), 1e-4) << "8 - (-2) units of medium";
+    EXPECT_NEAR(truth.at(20, 20, 3), 1.0, 1e-12);
+    double worst = 0.0;
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x)
+            for (int c = 0; c < 4; ++c) worst = std::max(worst, std::abs(double(gpu.at(x, y)[c]) - truth.at(x, y, c)));
+    EXPECT_LT(worst, 2e-3) << "the GPU's depth-texture ray end against the reference's";
+}
+
 }  // namespace
 }  // namespace volren::test

@@ -1,7 +1,7 @@
 // Every scene in scenes/ loads through OSG's own reader without a warning, renders headlessly
 // with the volumes and the polygon models it is made of visible, and renders identically after a
-// round trip through .osgb, and after stock osgconv to .osgb and back to .osgt. (Compatibility profile only, like stock OSG viewers: the polygon
-// models are fixed-function.)
+// round trip through .osgb, and after stock osgconv to .osgb and back to .osgt. (Compatibility
+// profile only, like stock OSG viewers: the polygon models are fixed-function.)
 #include "RenderFixture.h"
 #include "TestData.h"
 

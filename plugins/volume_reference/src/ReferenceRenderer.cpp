@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <mutex>
+#include <stdexcept>
 #include <thread>
 
 namespace volren {
@@ -91,14 +92,16 @@ public:
             _clips.push_back({static_cast<const ClipNode*>(placed.node.get()), osg::Matrixd::inverse(placed.localToWorld)});
     }
 
-    /// Premultiplied RGBA of one ray (before the background), converged as the options say.
-    glm::dvec4 integrate(const Ray& ray, bool& converged, double& finest) const
+    /// Premultiplied RGBA of one ray (before the background) up to the fraction `end` of it,
+    /// converged as the options say.
+    glm::dvec4 integrate(const Ray& ray, double end, bool& converged, double& finest) const
     {
         double u0 = 1.0, u1 = 0.0;  // the union of the boxes along the ray, as fractions of it
         for (const Medium& m : _media) {
             double a = 0.0, b = 1.0;
             if (boxSpan(m, ray, a, b)) u0 = std::min(u0, a), u1 = std::max(u1, b);
         }
+        u1 = std::min(u1, end);
         converged = true;
         if (!(u1 > u0)) return glm::dvec4(0.0);
         double step = _options.firstStep * _unit;
@@ -212,6 +215,10 @@ ReferenceImage renderReference(const ReferenceScene& scene, const ReferenceCamer
     const Integrator integrator(scene, options);
     const osg::Matrixd clipToWorld = osg::Matrixd::inverse(camera.view * camera.projection);
 
+    const std::size_t pixels = std::size_t(camera.width) * camera.height;
+    const bool withGeometry = !options.geometryDepth.empty();
+    if (withGeometry && (options.geometryDepth.size() != pixels || options.geometryColour.size() != pixels * 4))
+        throw std::invalid_argument("reference: geometry depth and colour must have one value (four) per pixel");
     std::atomic<int> nextRow{0};
     std::atomic<std::size_t> unconverged{0};
     double finest = std::numeric_limits<double>::infinity();
@@ -227,12 +234,21 @@ ReferenceImage renderReference(const ReferenceScene& scene, const ReferenceCamer
                 ray.origin = toGlm(nearPoint);
                 ray.direction = toGlm(farPoint - nearPoint);
                 ray.length = glm::length(ray.direction);
+                const std::size_t pixel = std::size_t(y) * camera.width + x;
+                // Opaque geometry ends the ray at its depth and lies behind the volumes.
+                double end = 1.0;
+                glm::dvec4 behind(toGlm(options.background), 0.0);
+                if (withGeometry && options.geometryDepth[pixel] < 1.0f) {
+                    const osg::Vec3d hit = osg::Vec3d(nx, ny, 2.0 * options.geometryDepth[pixel] - 1.0) * clipToWorld;
+                    end = glm::length(toGlm(hit - nearPoint)) / ray.length;
+                }
+                if (withGeometry)
+                    for (int k = 0; k < 4; ++k) behind[k] = options.geometryColour[pixel * 4 + k];
                 bool converged = true;
-                const glm::dvec4 c = integrator.integrate(ray, converged, localFinest);
+                const glm::dvec4 c = integrator.integrate(ray, end, converged, localFinest);
                 if (!converged) ++unconverged;
-                double* out = &image.rgba[(std::size_t(y) * camera.width + x) * 4];
-                for (int k = 0; k < 3; ++k) out[k] = c[k] + (1.0 - c.a) * options.background[k];
-                out[3] = c.a;
+                double* out = &image.rgba[pixel * 4];
+                for (int k = 0; k < 4; ++k) out[k] = c[k] + (1.0 - c.a) * behind[k];
             }
         }
         std::lock_guard<std::mutex> lock(finestMutex);

@@ -25,6 +25,11 @@ struct ReferenceOptions
     double firstStep = 0.25;
     double finestStep = 1.0 / 4096.0;
     osg::Vec3d background{0.0, 0.0, 0.0};  ///< linear RGB behind the volumes
+    /// Opaque geometry, as a rasteriser drew it for the same camera (row 0 at the bottom): its
+    /// window depth per pixel (rays end there; 1 = nothing) and its premultiplied RGBA over the
+    /// background (what the volumes are composited over). Empty: no geometry.
+    std::vector<float> geometryDepth;
+    std::vector<float> geometryColour;
     unsigned int threads = 0;               ///< 0: one per hardware thread
 };
 
