@@ -387,6 +387,13 @@ TEST(DicomReader, BadSeriesAreRejectedWithFileAndReason)
     fs::copy_file(known, root + "/gdcm-abort/slice.dcm");
     check(root + "/gdcm-abort/slice.dcm", "malformed DICOM file: element (0020,000d) at byte 340 claims 27678 bytes; 246 are left");
     check(root + "/gdcm-abort", "slice.dcm: malformed DICOM file: element (0020,000d)");
+    // A bare data set (no Part 10 preamble) whose first element is cut short: GDCM 3.0 aborts in
+    // ExplicitDataElement::ReadPreValue; it is not DICOM to volren, and skipped in a folder.
+    const std::string bare = std::string(VOLREN_SOURCE_DIR) + "/tests/fuzz/known/dcm-gdcm-ReadPreValue-assert.dcm";
+    fs::create_directories(root + "/gdcm-abort2");
+    fs::copy_file(bare, root + "/gdcm-abort2/slice.dcm");
+    check(root + "/gdcm-abort2/slice.dcm", "not a DICOM file: truncated");
+    check(root + "/gdcm-abort2", "no DICOM files");
 
     fs::create_directories(root + "/empty");
     check(root + "/empty", "empty directory (expected TIFF, 2D image or DICOM slices)");

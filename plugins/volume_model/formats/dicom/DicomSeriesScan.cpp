@@ -103,8 +103,9 @@ std::vector<DicomSlice> findSeries(const std::string& path, const std::string& s
     std::string wanted = seriesUid;
     std::string dir = path;
     if (!isDirectory) {
-        if (const std::string problem = structureProblem(path); !problem.empty())
-            throw std::runtime_error(path + ": malformed DICOM file: " + problem);
+        if (const Structure check = structureProblem(path); !check.problem.empty())
+            throw std::runtime_error(path + (check.part10 ? ": malformed DICOM file: " : ": not a DICOM file: ") +
+                                     check.problem);
         gdcm::Scanner single = makeScanner();
         if (!single.Scan({path}) || !single.IsKey(path.c_str())) throw std::runtime_error(path + ": not a DICOM file");
         const DicomSlice own = sliceOf(single, path);
@@ -113,12 +114,15 @@ std::vector<DicomSlice> findSeries(const std::string& path, const std::string& s
         if (dir.empty()) dir = ".";
     }
 
-    const std::vector<std::string> files = filesIn(dir);
     // GDCM would abort the process on some malformed files: check them before it sees them. A
-    // broken slice fails the whole read (skipping it would leave a gap in the volume).
-    for (const std::string& f : files)
-        if (const std::string problem = structureProblem(f); !problem.empty())
-            throw std::runtime_error(f + ": malformed DICOM file: " + problem);
+    // broken Part 10 file fails the whole read (skipping a slice would leave a gap in the volume);
+    // other files that do not walk as DICOM data sets are not DICOM and are skipped.
+    std::vector<std::string> files;
+    for (const std::string& f : filesIn(dir)) {
+        const Structure check = structureProblem(f);
+        if (check.problem.empty()) files.push_back(f);
+        else if (check.part10) throw std::runtime_error(f + ": malformed DICOM file: " + check.problem);
+    }
     gdcm::Scanner scanner = makeScanner();
     if (!files.empty() && !scanner.Scan(files)) throw std::runtime_error(path + ": scanning the DICOM files failed");
     std::map<std::string, std::vector<DicomSlice>> series;

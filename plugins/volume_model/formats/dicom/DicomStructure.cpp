@@ -152,17 +152,35 @@ private:
 
 }  // namespace
 
-std::string structureProblem(const std::string& file)
+Structure structureProblem(const std::string& file)
 {
+    Structure result;
     std::ifstream in(file, std::ios::binary | std::ios::ate);
-    if (!in) return "cannot open";
+    if (!in) {
+        result.problem = "cannot open";
+        return result;
+    }
     const std::uint64_t size = std::uint64_t(in.tellg());
     char magic[4] = {};
     in.seekg(128);
-    if (size < 132 || !in.read(magic, 4) || std::memcmp(magic, "DICM", 4) != 0) return "";  // not Part 10
+    result.part10 = size >= 132 && in.read(magic, 4) && std::memcmp(magic, "DICM", 4) == 0;
+    Walker walker(in, size);
+    if (!result.part10) {
+        // A bare data set: explicit VR when the first element carries one (two capital letters).
+        char head[6] = {};
+        in.clear();
+        in.seekg(0);
+        if (size < 8 || !in.read(head, 6)) {
+            result.problem = "too short for a data element";
+            return result;
+        }
+        const bool explicitVr = head[4] >= 'A' && head[4] <= 'Z' && head[5] >= 'A' && head[5] <= 'Z';
+        walker.dataSet(0, size, explicitVr, 0, 0);
+        result.problem = walker.problem;
+        return result;
+    }
 
     // The file meta group (0002,xxxx): explicit VR little endian, whatever the data set uses.
-    Walker walker(in, size);
     std::uint64_t pos = 132;
     std::string transferSyntax;
     while (pos + 8 <= size) {
@@ -174,7 +192,10 @@ std::string structureProblem(const std::string& file)
         const std::uint16_t element = std::uint16_t(head[3] << 8 | head[2]);
         if (group != 0x0002) break;
         const std::uint64_t next = walker.one(pos, size, true, 0);
-        if (!walker.problem.empty()) return "file meta information: " + walker.problem;
+        if (!walker.problem.empty()) {
+            result.problem = "file meta information: " + walker.problem;
+            return result;
+        }
         if (element == 0x0010 && next >= pos + 8 && next - pos - 8 <= 64) {  // transfer syntax UID
             transferSyntax.resize(next - pos - 8);
             in.clear();
@@ -185,11 +206,12 @@ std::string structureProblem(const std::string& file)
         }
         pos = next;
     }
-    if (transferSyntax == "1.2.840.10008.1.2.1.99") return "";  // deflated data set: not walkable here
+    if (transferSyntax == "1.2.840.10008.1.2.1.99") return result;  // deflated data set: not walkable here
     const bool implicitVr = transferSyntax == "1.2.840.10008.1.2";
     walker.bigEndian = transferSyntax == "1.2.840.10008.1.2.2";
     walker.dataSet(pos, size, !implicitVr, 0, 0);
-    return walker.problem;
+    result.problem = walker.problem;
+    return result;
 }
 
 }  // namespace volren::dicom
