@@ -394,6 +394,11 @@ TEST(DicomReader, BadSeriesAreRejectedWithFileAndReason)
     fs::copy_file(bare, root + "/gdcm-abort2/slice.dcm");
     check(root + "/gdcm-abort2/slice.dcm", "not a DICOM file: truncated");
     check(root + "/gdcm-abort2", "no DICOM files");
+    // A sequence in the file meta group: GDCM 3.0 aborts in ReadExplicitDataElement.
+    const std::string metaSq = std::string(VOLREN_SOURCE_DIR) + "/tests/fuzz/known/dcm-gdcm-meta-SQ-assert.dcm";
+    fs::create_directories(root + "/gdcm-abort3");
+    fs::copy_file(metaSq, root + "/gdcm-abort3/slice.dcm");
+    check(root + "/gdcm-abort3/slice.dcm", "file meta information: (0002,0001) is a sequence");
 
     fs::create_directories(root + "/empty");
     check(root + "/empty", "empty directory (expected TIFF, 2D image or DICOM slices)");

@@ -1,6 +1,7 @@
 #include "DicomStructure.h"
 
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -12,6 +13,13 @@ namespace {
 constexpr std::uint32_t undefinedLength = 0xFFFFFFFFu;
 constexpr std::uint16_t itemGroup = 0xFFFE;
 constexpr std::uint16_t item = 0xE000, itemEnd = 0xE00D, sequenceEnd = 0xE0DD;
+
+std::string hex4(std::uint16_t value)
+{
+    char text[5];
+    std::snprintf(text, sizeof(text), "%04x", value);
+    return text;
+}
 
 std::string tagName(std::uint16_t group, std::uint16_t element, std::uint64_t offset)
 {
@@ -191,6 +199,22 @@ Structure structureProblem(const std::string& file)
         const std::uint16_t group = std::uint16_t(head[1] << 8 | head[0]);
         const std::uint16_t element = std::uint16_t(head[3] << 8 | head[2]);
         if (group != 0x0002) break;
+        // The meta group holds plain values: a sequence or an undefined length there makes GDCM
+        // 3.0 abort ("If any boozoo ever write a SQ in the meta header").
+        char vr[3] = {};
+        in.clear();
+        in.seekg(std::streamoff(pos + 4));
+        in.read(vr, 2);
+        unsigned char longLength[4] = {0, 0, 0, 0};
+        in.clear();
+        in.seekg(std::streamoff(pos + 8));
+        in.read(reinterpret_cast<char*>(longLength), 4);
+        const bool undefined = (std::strcmp(vr, "OB") == 0 || std::strcmp(vr, "UN") == 0 || std::strcmp(vr, "OW") == 0) &&
+                               longLength[0] == 0xFF && longLength[1] == 0xFF && longLength[2] == 0xFF && longLength[3] == 0xFF;
+        if (std::strcmp(vr, "SQ") == 0 || undefined) {
+            result.problem = "file meta information: (0002," + hex4(element) + ") is a sequence or has an undefined length";
+            return result;
+        }
         const std::uint64_t next = walker.one(pos, size, true, 0);
         if (!walker.problem.empty()) {
             result.problem = "file meta information: " + walker.problem;
