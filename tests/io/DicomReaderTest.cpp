@@ -399,6 +399,13 @@ TEST(DicomReader, BadSeriesAreRejectedWithFileAndReason)
     fs::create_directories(root + "/gdcm-abort3");
     fs::copy_file(metaSq, root + "/gdcm-abort3/slice.dcm");
     check(root + "/gdcm-abort3/slice.dcm", "file meta information: (0002,0001) is a sequence");
+    // Malformed in a way the structure check does not know: GDCM aborts, but in a child process
+    // that scans the files first, so the read fails with a message instead.
+    const std::string implicitMeta = std::string(VOLREN_SOURCE_DIR) + "/tests/fuzz/known/dcm-gdcm-ReadImplicitDataElement-assert.dcm";
+    fs::create_directories(root + "/gdcm-abort4");
+    fs::copy_file(implicitMeta, root + "/gdcm-abort4/slice.dcm");
+    check(root + "/gdcm-abort4/slice.dcm", "slice.dcm: GDCM aborted reading it");
+    check(root + "/gdcm-abort4", "slice.dcm: GDCM aborted reading it");
 
     fs::create_directories(root + "/empty");
     check(root + "/empty", "empty directory (expected TIFF, 2D image or DICOM slices)");

@@ -1,5 +1,6 @@
 #include "DicomSeriesScan.h"
 #include "DicomStructure.h"
+#include "GdcmProbe.h"
 
 #include <volume_model/ParseNumber.h>
 
@@ -81,6 +82,13 @@ gdcm::Scanner makeScanner()
     return scanner;
 }
 
+/// What the child-process probe runs per file: the same scan the real run makes.
+void scanOne(const std::string& file)
+{
+    gdcm::Scanner scanner = makeScanner();
+    scanner.Scan({file});
+}
+
 std::vector<std::string> filesIn(const std::string& dir)
 {
     std::vector<std::string> files;
@@ -106,6 +114,7 @@ std::vector<DicomSlice> findSeries(const std::string& path, const std::string& s
         if (const Structure check = structureProblem(path); !check.problem.empty())
             throw std::runtime_error(path + (check.part10 ? ": malformed DICOM file: " : ": not a DICOM file: ") +
                                      check.problem);
+        if (const std::string aborted = probeInChild({path}, scanOne); !aborted.empty()) throw std::runtime_error(aborted);
         gdcm::Scanner single = makeScanner();
         if (!single.Scan({path}) || !single.IsKey(path.c_str())) throw std::runtime_error(path + ": not a DICOM file");
         const DicomSlice own = sliceOf(single, path);
@@ -123,6 +132,7 @@ std::vector<DicomSlice> findSeries(const std::string& path, const std::string& s
         if (check.problem.empty()) files.push_back(f);
         else if (check.part10) throw std::runtime_error(f + ": malformed DICOM file: " + check.problem);
     }
+    if (const std::string aborted = probeInChild(files, scanOne); !aborted.empty()) throw std::runtime_error(aborted);
     gdcm::Scanner scanner = makeScanner();
     if (!files.empty() && !scanner.Scan(files)) throw std::runtime_error(path + ": scanning the DICOM files failed");
     std::map<std::string, std::vector<DicomSlice>> series;
