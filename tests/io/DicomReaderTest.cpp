@@ -406,6 +406,13 @@ TEST(DicomReader, BadSeriesAreRejectedWithFileAndReason)
     fs::copy_file(implicitMeta, root + "/gdcm-abort4/slice.dcm");
     check(root + "/gdcm-abort4/slice.dcm", "slice.dcm: GDCM aborted reading it");
     check(root + "/gdcm-abort4", "slice.dcm: GDCM aborted reading it");
+    // No Pixel Data element (a fuzzer mutation renamed it): GDCM 3.0 grew to 2.2 GB looking for
+    // it; refused before GDCM reads it, and skipped in a folder as not an image.
+    const std::string noPixels = std::string(VOLREN_SOURCE_DIR) + "/tests/fuzz/known/dcm-gdcm-memory-growth.dcm";
+    fs::create_directories(root + "/gdcm-memory");
+    fs::copy_file(noPixels, root + "/gdcm-memory/slice.dcm");
+    check(root + "/gdcm-memory/slice.dcm", "without pixel data (7FE0,0010)");
+    check(root + "/gdcm-memory", "no DICOM files");
 
     fs::create_directories(root + "/empty");
     check(root + "/empty", "empty directory (expected TIFF, 2D image or DICOM slices)");

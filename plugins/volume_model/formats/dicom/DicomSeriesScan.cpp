@@ -111,9 +111,12 @@ std::vector<DicomSlice> findSeries(const std::string& path, const std::string& s
     std::string wanted = seriesUid;
     std::string dir = path;
     if (!isDirectory) {
-        if (const Structure check = structureProblem(path); !check.problem.empty())
+        const Structure check = structureProblem(path);
+        if (!check.problem.empty())
             throw std::runtime_error(path + (check.part10 ? ": malformed DICOM file: " : ": not a DICOM file: ") +
                                      check.problem);
+        // GDCM 3.0 grows to gigabytes looking for missing pixel data in some malformed files.
+        if (!check.pixelData) throw std::runtime_error(path + ": DICOM file without pixel data (7FE0,0010): not an image");
         if (const std::string aborted = probeInChild({path}, scanOne); !aborted.empty()) throw std::runtime_error(aborted);
         gdcm::Scanner single = makeScanner();
         if (!single.Scan({path}) || !single.IsKey(path.c_str())) throw std::runtime_error(path + ": not a DICOM file");
@@ -129,8 +132,8 @@ std::vector<DicomSlice> findSeries(const std::string& path, const std::string& s
     std::vector<std::string> files;
     for (const std::string& f : filesIn(dir)) {
         const Structure check = structureProblem(f);
-        if (check.problem.empty()) files.push_back(f);
-        else if (check.part10) throw std::runtime_error(f + ": malformed DICOM file: " + check.problem);
+        if (check.problem.empty() && check.pixelData) files.push_back(f);  // others are not images
+        else if (check.part10 && !check.problem.empty()) throw std::runtime_error(f + ": malformed DICOM file: " + check.problem);
     }
     if (const std::string aborted = probeInChild(files, scanOne); !aborted.empty()) throw std::runtime_error(aborted);
     gdcm::Scanner scanner = makeScanner();

@@ -39,6 +39,7 @@ public:
     Walker(std::ifstream& in, std::uint64_t size) : _in(in), _size(size) {}
 
     bool bigEndian = false;
+    bool pixelData = false;  ///< (7FE0,0010) met at the top level
     std::string problem;
 
     /// The data elements from `pos` up to `end`, or (undefined length) up to the delimiter `stopAt`.
@@ -48,6 +49,7 @@ public:
             std::uint16_t group = 0, element = 0;
             if (!tag(pos, group, element)) return fail("truncated tag at byte " + std::to_string(pos));
             if (group == itemGroup && element == stopAt) return pos + 8;
+            if (depth == 0 && group == 0x7FE0 && element == 0x0010) pixelData = true;
             pos = one(pos, end, explicitVr, depth);
         }
         if (problem.empty() && stopAt != 0) fail("an item is not terminated before the end of the file");
@@ -185,6 +187,7 @@ Structure structureProblem(const std::string& file)
         const bool explicitVr = head[4] >= 'A' && head[4] <= 'Z' && head[5] >= 'A' && head[5] <= 'Z';
         walker.dataSet(0, size, explicitVr, 0, 0);
         result.problem = walker.problem;
+        result.pixelData = walker.pixelData;
         return result;
     }
 
@@ -230,11 +233,15 @@ Structure structureProblem(const std::string& file)
         }
         pos = next;
     }
-    if (transferSyntax == "1.2.840.10008.1.2.1.99") return result;  // deflated data set: not walkable here
+    if (transferSyntax == "1.2.840.10008.1.2.1.99") {  // deflated data set: not walkable here
+        result.pixelData = true;
+        return result;
+    }
     const bool implicitVr = transferSyntax == "1.2.840.10008.1.2";
     walker.bigEndian = transferSyntax == "1.2.840.10008.1.2.2";
     walker.dataSet(pos, size, !implicitVr, 0, 0);
     result.problem = walker.problem;
+    result.pixelData = walker.pixelData;
     return result;
 }
 

@@ -8,6 +8,7 @@ struct Structure
 {
     bool part10 = false;  ///< the file has the Part 10 preamble ("DICM" at byte 128)
     std::string problem;  ///< "" when the elements are sound (or, deflated, cannot be walked)
+    bool pixelData = false;  ///< the data set has a Pixel Data element (7FE0,0010) at its top level
 };
 
 /// Walks the data elements of a file as DICOM: a Part 10 file (preamble, "DICM", explicit-VR
