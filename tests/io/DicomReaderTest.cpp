@@ -406,6 +406,11 @@ TEST(DicomReader, BadSeriesAreRejectedWithFileAndReason)
     fs::copy_file(implicitMeta, root + "/gdcm-abort4/slice.dcm");
     check(root + "/gdcm-abort4/slice.dcm", "slice.dcm: GDCM aborted reading it");
     check(root + "/gdcm-abort4", "slice.dcm: GDCM aborted reading it");
+    // One that passes GDCM's scan but aborts its image reader: the probe reads the image too.
+    const std::string imageAbort = std::string(VOLREN_SOURCE_DIR) + "/tests/fuzz/known/dcm-gdcm-ImageReader-assert.dcm";
+    fs::create_directories(root + "/gdcm-abort5");
+    fs::copy_file(imageAbort, root + "/gdcm-abort5/slice.dcm");
+    check(root + "/gdcm-abort5", "slice.dcm: GDCM aborted reading it");
     // No Pixel Data element (a fuzzer mutation renamed it): GDCM 3.0 grew to 2.2 GB looking for
     // it; refused before GDCM reads it, and skipped in a folder as not an image.
     const std::string noPixels = std::string(VOLREN_SOURCE_DIR) + "/tests/fuzz/known/dcm-gdcm-memory-growth.dcm";

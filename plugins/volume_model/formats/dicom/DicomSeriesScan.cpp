@@ -6,6 +6,7 @@
 
 #include <osg/Notify>
 
+#include <gdcmImageReader.h>
 #include <gdcmScanner.h>
 
 #include <algorithm>
@@ -82,11 +83,15 @@ gdcm::Scanner makeScanner()
     return scanner;
 }
 
-/// What the child-process probe runs per file: the same scan the real run makes.
+/// What the child-process probe runs per file: the same scan the real run makes, and GDCM's
+/// full read of the file (the image reader parses it again, and can abort too).
 void scanOne(const std::string& file)
 {
     gdcm::Scanner scanner = makeScanner();
     scanner.Scan({file});
+    gdcm::ImageReader reader;
+    reader.SetFileName(file.c_str());
+    reader.Read();
 }
 
 std::vector<std::string> filesIn(const std::string& dir)
