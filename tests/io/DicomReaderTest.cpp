@@ -1,6 +1,7 @@
 // DICOM series loader (GDCM): the shared CT subset (expected values from its MANIFEST and an
 // independent byte-level parse), sorting by position, several series, synthetic series
 // written by a minimal DICOM writer below, and bad series that must fail with file and reason.
+#include "GdcmProbe.h"
 #include "TestData.h"
 
 #include <volume_model/LoadProgress.h>
@@ -19,6 +20,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 
 namespace volren::test {
@@ -399,31 +401,54 @@ TEST(DicomReader, BadSeriesAreRejectedWithFileAndReason)
     fs::create_directories(root + "/gdcm-abort3");
     fs::copy_file(metaSq, root + "/gdcm-abort3/slice.dcm");
     check(root + "/gdcm-abort3/slice.dcm", "file meta information: (0002,0001) is a sequence");
-    // Malformed in a way the structure check does not know: GDCM aborts, but in a child process
-    // that scans the files first, so the read fails with a message instead.
+    // An implicit-VR meta group made GDCM abort (the child-process probe caught it first); its
+    // "VR" is no VR, so the structure check now refuses it.
     const std::string implicitMeta = std::string(VOLREN_SOURCE_DIR) + "/tests/fuzz/known/dcm-gdcm-ReadImplicitDataElement-assert.dcm";
     fs::create_directories(root + "/gdcm-abort4");
     fs::copy_file(implicitMeta, root + "/gdcm-abort4/slice.dcm");
-    check(root + "/gdcm-abort4/slice.dcm", "slice.dcm: GDCM aborted reading it");
-    check(root + "/gdcm-abort4", "slice.dcm: GDCM aborted reading it");
-    // One that passes GDCM's scan but aborts its image reader: the probe reads the image too.
+    check(root + "/gdcm-abort4/slice.dcm", "file meta information: element (0002,0004) at byte 132 has an unknown VR");
+    // One that passed GDCM's scan but aborted its image reader (a bad VR in the meta group).
     const std::string imageAbort = std::string(VOLREN_SOURCE_DIR) + "/tests/fuzz/known/dcm-gdcm-ImageReader-assert.dcm";
     fs::create_directories(root + "/gdcm-abort5");
     fs::copy_file(imageAbort, root + "/gdcm-abort5/slice.dcm");
-    check(root + "/gdcm-abort5", "slice.dcm: GDCM aborted reading it");
-    // No Pixel Data element (a fuzzer mutation renamed it): GDCM 3.0 grew to 2.2 GB looking for
-    // it; refused before GDCM reads it, and skipped in a folder as not an image.
-    const std::string noPixels = std::string(VOLREN_SOURCE_DIR) + "/tests/fuzz/known/dcm-gdcm-memory-growth.dcm";
-    fs::create_directories(root + "/gdcm-memory");
-    fs::copy_file(noPixels, root + "/gdcm-memory/slice.dcm");
-    check(root + "/gdcm-memory/slice.dcm", "without pixel data (7FE0,0010)");
-    check(root + "/gdcm-memory", "no DICOM files");
+    check(root + "/gdcm-abort5", "slice.dcm: malformed DICOM file: file meta information: element (0002,0010) at byte 230 has an unknown VR");
+    // Unknown VRs ("UW", "UQ"): GDCM misread the lengths and grew to 2.2 GB.
+    for (const char* name : {"dcm-gdcm-memory-growth.dcm", "dcm-gdcm-unknown-VR-memory.dcm"}) {
+        const std::string dir = root + "/" + name + ".d";
+        fs::create_directories(dir);
+        fs::copy_file(std::string(VOLREN_SOURCE_DIR) + "/tests/fuzz/known/" + name, dir + "/slice.dcm");
+        check(dir + "/slice.dcm", "malformed DICOM file: element (0028,0103) at byte 560 has an unknown VR");
+    }
+    // No Pixel Data element: not an image; refused when named, skipped in a folder, before GDCM
+    // (which grew to 2.2 GB looking for it) reads it.
+    std::ifstream seed(std::string(VOLREN_SOURCE_DIR) + "/tests/fuzz/corpus/dcm/uint8.dcm", std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(seed)), std::istreambuf_iterator<char>());
+    const std::size_t pixelTag = bytes.find(std::string("\xe0\x7f\x10\x00", 4));
+    ASSERT_NE(pixelTag, std::string::npos);
+    bytes[pixelTag + 3] = '\x09';  // (7FE0,0910): a sound element, but no pixel data
+    fs::create_directories(root + "/no-pixels");
+    writeFile(root + "/no-pixels/slice.dcm", bytes);
+    check(root + "/no-pixels/slice.dcm", "without pixel data (7FE0,0010)");
+    check(root + "/no-pixels", "no DICOM files");
 
     fs::create_directories(root + "/empty");
     check(root + "/empty", "empty directory (expected TIFF, 2D image or DICOM slices)");
     std::ofstream(root + "/junk.dcm") << "definitely not a DICOM file";
     check(root + "/junk.dcm", "not a DICOM file");
     check(root + "/nope.dcm", "no such file");
+}
+
+TEST(DicomReader, AnAbortWhileProbingAFileBecomesAnErrorNamingIt)
+{
+    // What the child-process probe is for: GDCM aborting (here: a step that aborts on one file)
+    // ends the child, not this process, and names the file it was reading.
+    const std::vector<std::string> files = {"a.dcm", "b.dcm", "c.dcm"};
+    const std::string message = dicom::probeInChild(files, [](const std::string& f) {
+        if (f == "b.dcm") std::abort();
+    });
+    EXPECT_EQ(message.rfind("b.dcm: GDCM aborted reading it", 0), 0u) << message;
+    EXPECT_EQ(dicom::probeInChild(files, [](const std::string&) {}), "");
+    EXPECT_EQ(dicom::probeInChild(files, [](const std::string&) { throw std::runtime_error("ordinary error"); }), "");
 }
 
 }  // namespace

@@ -70,6 +70,14 @@ public:
         if (explicitVr) {
             char vr[3] = {};
             if (!bytes(pos + 4, vr, 2)) return fail("truncated " + tagName(group, element, at));
+            // Every VR of the standard (PS3.5 6.2); anything else makes GDCM misread the lengths
+            // (it grew to 2.2 GB on a "UQ").
+            static const char* const known[] = {"AE", "AS", "AT", "CS", "DA", "DS", "DT", "FD", "FL", "IS", "LO", "LT",
+                                                "OB", "OD", "OF", "OL", "OV", "OW", "PN", "SH", "SL", "SQ", "SS", "ST",
+                                                "SV", "TM", "UC", "UI", "UL", "UN", "UR", "US", "UT", "UV"};
+            bool valid = false;
+            for (const char* k : known) valid = valid || std::strcmp(vr, k) == 0;
+            if (!valid) return fail(tagName(group, element, at) + " has an unknown VR");
             static const char* const longForms[] = {"OB", "OD", "OF", "OL", "OV", "OW", "SQ", "SV", "UC", "UN", "UR", "UT", "UV"};
             bool longForm = false;
             for (const char* l : longForms) longForm = longForm || std::strcmp(vr, l) == 0;
