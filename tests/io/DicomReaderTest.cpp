@@ -419,6 +419,12 @@ TEST(DicomReader, BadSeriesAreRejectedWithFileAndReason)
         fs::copy_file(std::string(VOLREN_SOURCE_DIR) + "/tests/fuzz/known/" + name, dir + "/slice.dcm");
         check(dir + "/slice.dcm", "malformed DICOM file: element (0028,0103) at byte 560 has an unknown VR");
     }
+    // SamplesPerPixel 2: sound structure, but GDCM's image reader aborts on it. The child-process
+    // probe (which runs GDCM's read first) turns that into an error.
+    fs::create_directories(root + "/gdcm-abort6");
+    fs::copy_file(std::string(VOLREN_SOURCE_DIR) + "/tests/fuzz/known/dcm-gdcm-SamplesPerPixel-assert.dcm",
+                  root + "/gdcm-abort6/slice.dcm");
+    check(root + "/gdcm-abort6/slice.dcm", "slice.dcm: GDCM aborted reading it");
     // No Pixel Data element: not an image; refused when named, skipped in a folder, before GDCM
     // (which grew to 2.2 GB looking for it) reads it.
     std::ifstream seed(std::string(VOLREN_SOURCE_DIR) + "/tests/fuzz/corpus/dcm/uint8.dcm", std::ios::binary);

@@ -87,8 +87,11 @@ gdcm::Scanner makeScanner()
 /// full read of the file (the image reader parses it again, and can abort too).
 void scanOne(const std::string& file)
 {
-    gdcm::Scanner scanner = makeScanner();
-    scanner.Scan({file});
+    try {  // each step on its own: an exception in the scan must not skip the image read
+        gdcm::Scanner scanner = makeScanner();
+        scanner.Scan({file});
+    } catch (...) {
+    }
     gdcm::ImageReader reader;
     reader.SetFileName(file.c_str());
     reader.Read();

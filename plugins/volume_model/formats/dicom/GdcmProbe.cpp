@@ -22,6 +22,9 @@ std::string probeInChild(const std::vector<std::string>& files, const std::funct
     }
     if (child == 0) {  // the child: report the index of each file before touching it
         ::close(channel[0]);
+        // Default deaths: handlers inherited from the parent (a fuzzer's or a sanitizer's crash
+        // reporting) must not turn the child's abort into an exit the parent cannot tell apart.
+        for (int sig : {SIGABRT, SIGSEGV, SIGBUS, SIGFPE, SIGILL}) std::signal(sig, SIG_DFL);
         const int quiet = ::open("/dev/null", O_WRONLY);  // GDCM's messages come again in the real run
         if (quiet >= 0) ::dup2(quiet, 2);
         for (std::uint32_t i = 0; i < files.size(); ++i) {
