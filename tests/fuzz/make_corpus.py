@@ -236,6 +236,7 @@ def dicom(rows, cols, bits, signed, pixels, extra=()):
           element(0x28, 0x100, "US", us(bits)), element(0x28, 0x101, "US", us(bits)), element(0x28, 0x102, "US", us(bits - 1)),
           element(0x28, 0x103, "US", us(1 if signed else 0))] + list(extra)
     ds.append(element(0x7FE0, 0x10, "OW" if bits > 8 else "OB", pixels))
+    ds.sort(key=lambda e: struct.unpack("<HH", e[:4]))  # ascending tags, as DICOM requires
     return b"\0" * 128 + b"DICM" + meta + b"".join(ds)
 
 

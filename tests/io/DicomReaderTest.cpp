@@ -419,12 +419,26 @@ TEST(DicomReader, BadSeriesAreRejectedWithFileAndReason)
         fs::copy_file(std::string(VOLREN_SOURCE_DIR) + "/tests/fuzz/known/" + name, dir + "/slice.dcm");
         check(dir + "/slice.dcm", "malformed DICOM file: element (0028,0103) at byte 560 has an unknown VR");
     }
-    // SamplesPerPixel 2: sound structure, but GDCM's image reader aborts on it. The child-process
-    // probe (which runs GDCM's read first) turns that into an error.
+    // SamplesPerPixel 2 made GDCM's image reader abort (the child-process probe turned that into
+    // an error); its seed had (0018,0050) after group 0028, out of order, which is refused now.
     fs::create_directories(root + "/gdcm-abort6");
     fs::copy_file(std::string(VOLREN_SOURCE_DIR) + "/tests/fuzz/known/dcm-gdcm-SamplesPerPixel-assert.dcm",
                   root + "/gdcm-abort6/slice.dcm");
-    check(root + "/gdcm-abort6/slice.dcm", "slice.dcm: GDCM aborted reading it");
+    check(root + "/gdcm-abort6/slice.dcm", "element (0018,0050) at byte 570 is out of order");
+    // No file meta group after "DICM" (and tags out of order): GDCM grew to 2.0 GB on it.
+    fs::create_directories(root + "/gdcm-memory3");
+    fs::copy_file(std::string(VOLREN_SOURCE_DIR) + "/tests/fuzz/known/dcm-gdcm-memory-open.dcm",
+                  root + "/gdcm-memory3/slice.dcm");
+    check(root + "/gdcm-memory3/slice.dcm", "malformed DICOM file: no file meta information (group 0002)");
+    // Tags out of order in the data set.
+    std::ifstream ordered(std::string(VOLREN_SOURCE_DIR) + "/tests/fuzz/corpus/dcm/uint8.dcm", std::ios::binary);
+    std::string swapped((std::istreambuf_iterator<char>(ordered)), std::istreambuf_iterator<char>());
+    const std::size_t modality = swapped.find(std::string("\x08\x00\x60\x00", 4));
+    ASSERT_NE(modality, std::string::npos);
+    swapped[modality + 2] = '\x00';  // (0008,0060) becomes (0008,0000), after (0008,0018)
+    fs::create_directories(root + "/out-of-order");
+    writeFile(root + "/out-of-order/slice.dcm", swapped);
+    check(root + "/out-of-order/slice.dcm", "is out of order (tags must ascend)");
     // No Pixel Data element: not an image; refused when named, skipped in a folder, before GDCM
     // (which grew to 2.2 GB looking for it) reads it.
     std::ifstream seed(std::string(VOLREN_SOURCE_DIR) + "/tests/fuzz/corpus/dcm/uint8.dcm", std::ios::binary);

@@ -45,10 +45,17 @@ public:
     /// The data elements from `pos` up to `end`, or (undefined length) up to the delimiter `stopAt`.
     std::uint64_t dataSet(std::uint64_t pos, std::uint64_t end, bool explicitVr, std::uint16_t stopAt, int depth)
     {
+        std::uint32_t previous = 0;  // elements come in ascending tag order (PS3.5 7.1)
+        bool first = true;
         while (problem.empty() && pos < end) {
             std::uint16_t group = 0, element = 0;
             if (!tag(pos, group, element)) return fail("truncated tag at byte " + std::to_string(pos));
             if (group == itemGroup && element == stopAt) return pos + 8;
+            const std::uint32_t key = std::uint32_t(group) << 16 | element;
+            if (!first && key <= previous)
+                return fail(tagName(group, element, pos) + " is out of order (tags must ascend)");
+            previous = key;
+            first = false;
             if (depth == 0 && group == 0x7FE0 && element == 0x0010) pixelData = true;
             pos = one(pos, end, explicitVr, depth);
         }
@@ -240,6 +247,14 @@ Structure structureProblem(const std::string& file)
                 transferSyntax.pop_back();
         }
         pos = next;
+    }
+    if (pos == 132) {
+        result.problem = "no file meta information (group 0002) after the DICM prefix";
+        return result;
+    }
+    if (transferSyntax.empty()) {
+        result.problem = "file meta information without a transfer syntax (0002,0010)";
+        return result;
     }
     if (transferSyntax == "1.2.840.10008.1.2.1.99") {  // deflated data set: not walkable here
         result.pixelData = true;
