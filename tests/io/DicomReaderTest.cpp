@@ -439,6 +439,11 @@ TEST(DicomReader, BadSeriesAreRejectedWithFileAndReason)
     fs::create_directories(root + "/out-of-order");
     writeFile(root + "/out-of-order/slice.dcm", swapped);
     check(root + "/out-of-order/slice.dcm", "is out of order (tags must ascend)");
+    // Bits Allocated and Bits Stored disagree: GDCM's codec asserts while decoding; the probe's
+    // child decodes first and dies instead.
+    fs::create_directories(root + "/gdcm-codec");
+    fs::copy_file(std::string(VOLREN_SOURCE_DIR) + "/tests/fuzz/known/dcm-gdcm-codec-assert.dcm", root + "/gdcm-codec/slice.dcm");
+    check(root + "/gdcm-codec/slice.dcm", "slice.dcm: GDCM aborted reading it");
     // No Pixel Data element: not an image; refused when named, skipped in a folder, before GDCM
     // (which grew to 2.2 GB looking for it) reads it.
     std::ifstream seed(std::string(VOLREN_SOURCE_DIR) + "/tests/fuzz/corpus/dcm/uint8.dcm", std::ios::binary);

@@ -84,7 +84,7 @@ gdcm::Scanner makeScanner()
 }
 
 /// What the child-process probe runs per file: the same scan the real run makes, and GDCM's
-/// full read of the file (the image reader parses it again, and can abort too).
+/// full read and decode of the file (the image reader and its codecs can abort too).
 void scanOne(const std::string& file)
 {
     try {  // each step on its own: an exception in the scan must not skip the image read
@@ -94,7 +94,11 @@ void scanOne(const std::string& file)
     }
     gdcm::ImageReader reader;
     reader.SetFileName(file.c_str());
-    reader.Read();
+    if (!reader.Read()) return;
+    // Decoding too: GDCM's codecs assert on inconsistent pixel descriptions.
+    const gdcm::Image& image = reader.GetImage();
+    std::vector<char> pixels(image.GetBufferLength());
+    image.GetBuffer(pixels.data());
 }
 
 std::vector<std::string> filesIn(const std::string& dir)
