@@ -121,8 +121,7 @@ osg::ref_ptr<VolumeScene> loadScene(const RenderOptions& options)
     if (!options.tfFile.empty()) {
         osg::ref_ptr<TransferFunction> tf = readTransferFunctionFile(options.tfFile);
         // ParaView presets are made for any data: like ParaView, map them onto each volume's range.
-        const std::string file = options.tfFile.substr(0, options.tfFile.rfind('#'));
-        const bool preset = osgDB::getLowerCaseFileExtension(file) == "json" && !options.tfKeepRange;
+        const bool preset = isParaViewPreset(options.tfFile) && !options.tfKeepRange;
         for (VolumeNode* node : nodes) {
             if (preset && node->getVolume()) {
                 osg::ref_ptr<TransferFunction> fitted = new TransferFunction(*tf);

@@ -29,13 +29,16 @@ struct RawPoint
 
 }  // namespace
 
+bool isParaViewPreset(const std::string& path)
+{
+    return osgDB::getLowerCaseFileExtension(path.substr(0, path.rfind('#'))) == "json";
+}
+
 osg::ref_ptr<TransferFunction> readTransferFunctionFile(const std::string& path)
 {
+    if (!isParaViewPreset(path)) return readTfFile(path);
     const std::size_t hash = path.rfind('#');
-    const std::string file = hash == std::string::npos ? path : path.substr(0, hash);
-    if (osgDB::getLowerCaseFileExtension(file) == "json")
-        return readParaViewPreset(file, hash == std::string::npos ? std::string() : path.substr(hash + 1));
-    return readTfFile(path);
+    return readParaViewPreset(path.substr(0, hash), hash == std::string::npos ? std::string() : path.substr(hash + 1));
 }
 
 osg::ref_ptr<TransferFunction> readTfFile(const std::string& path)

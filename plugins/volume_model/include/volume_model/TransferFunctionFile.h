@@ -11,6 +11,9 @@ namespace volren {
 /// `.tf` text format (readTfFile). Throws std::runtime_error naming the file and the reason.
 osg::ref_ptr<TransferFunction> readTransferFunctionFile(const std::string& path);
 
+/// Whether `path` names a ParaView preset file (`x.json`, or `x.json#Name` for one preset of it).
+bool isParaViewPreset(const std::string& path);
+
 /// Reads OSG's `.tf` text format (docs/transfer-functions.md): lines `value r g b a [comment]`,
 /// `#` comments, an optional `colour-scale S` (components are divided by S, 255 by default), and
 /// volren's own comment lines `#volren domain MIN MAX` / `#volren resolution N`. Values are data
