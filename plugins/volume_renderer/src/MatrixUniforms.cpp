@@ -21,6 +21,14 @@ void MatrixUniforms::drawImplementation(osg::RenderInfo& renderInfo, const osg::
         }
     }
     drawable->drawImplementation(renderInfo);
+    if (!state.useVertexArrayObject(drawable->getUseVertexArrayObject())) forgetClientArrays(state);
+}
+
+void forgetClientArrays(osg::State& state)
+{
+    if (!state.getCurrentVertexArrayState()) return;
+    state.lazyDisablingOfVertexAttributes();  // marks every array in use as unused...
+    state.applyDisablingOfVertexAttributes();  // ...then disables them and forgets their addresses
 }
 
 }  // namespace volren

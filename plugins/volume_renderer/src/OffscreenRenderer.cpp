@@ -1,3 +1,4 @@
+#include <volume_renderer/MatrixUniforms.h>
 #include <volume_renderer/OffscreenRenderer.h>
 
 #include <osg/GLExtensions>
@@ -209,6 +210,8 @@ void OffscreenRenderer::setScene(osg::Node* root)
     _scene = scene;
     _viewer->setSceneData(_scene.get());
     _checked = false;
+    // The old scene's arrays may be freed now, and new ones allocated at their addresses.
+    if (_context->makeCurrent()) forgetClientArrays(*state());
 }
 
 osg::State* OffscreenRenderer::state()

@@ -8,10 +8,18 @@ namespace volren {
 /// `osgviewer` and most applications with a compatibility context). volren's own contexts turn
 /// the uniform mode on; then this callback only draws. The shaders read the vertex from
 /// attribute 0, which is the fixed-function vertex array in a compatibility context.
+/// Drawn from client arrays (no VAO), it also makes OSG forget those arrays afterwards (see
+/// forgetClientArrays).
 class MatrixUniforms : public osg::Drawable::DrawCallback
 {
 public:
     void drawImplementation(osg::RenderInfo& renderInfo, const osg::Drawable* drawable) const override;
 };
+
+/// Disables the client arrays OSG's global vertex-array state holds and forgets their addresses.
+/// OSG 3.6 skips glVertexPointer when an array has the address and modified count of the one
+/// it set last, even across frames, and State::reset() does not clear that; so a new scene's
+/// array allocated where the last scene's was freed would be drawn from freed memory.
+void forgetClientArrays(osg::State& state);
 
 }  // namespace volren
