@@ -23,10 +23,7 @@ vec4 volren_traverse(vec3 origin, vec3 dir, float tNear, float tFar, float jitte
         if (!(dTau > 0.0)) continue;
         float a = volren_opacityFromDepth(dTau);
         color = a * volren_shade(p, viewDir, c) + (1.0 - a) * color;
-        precise float y = dTau - compensation;
-        precise float t = depth + y;
-        compensation = (t - depth) - y;
-        depth = t;
+        volren_addDepth(dTau, depth, compensation);
     }
     return vec4(color, volren_opacityFromDepth(depth));
 }

@@ -25,10 +25,7 @@ vec4 volren_traverse(vec3 origin, vec3 dir, float tNear, float tFar, float jitte
                 float dTau = volren_opticalDepth(c.a, lenT * m.worldPerT / volren_referenceStep);
                 if (dTau > 0.0) {
                     color += exp(-depth) * volren_opacityFromDepth(dTau) * volren_shade(p, viewDir, c);
-                    precise float y = dTau - compensation;
-                    precise float t = depth + y;
-                    compensation = (t - depth) - y;
-                    depth = t;
+                    volren_addDepth(dTau, depth, compensation);
                     if (depth >= volren_terminationDepth) break;
                 }
             }

@@ -30,3 +30,13 @@ float volren_segmentStart(VolrenMarch m, int i, float tNear, float tFar)
 {
     return i == 0 ? tNear : volren_segmentEnd(m, i - 1, tFar);
 }
+
+// Adds a segment's optical depth dTau to depth, Kahan-compensated (tiny depths stay exact
+// along rays of millions of samples).
+void volren_addDepth(float dTau, inout float depth, inout float compensation)
+{
+    precise float y = dTau - compensation;
+    precise float t = depth + y;
+    compensation = (t - depth) - y;
+    depth = t;
+}

@@ -43,6 +43,7 @@ void ShaderFunctionRegistry::addBuiltins()
     registerIlluminationFunctions(*this);
     registerShadowingFunctions(*this);
     registerAccelerationFunctions(*this);
+    registerMultiVolumeFunctions(*this);
 }
 
 namespace {
@@ -126,7 +127,8 @@ std::vector<std::string> ShaderFunctionRegistry::names(const std::string& slot) 
 {
     std::vector<std::string> out;
     if (auto s = _functions.find(slot); s != _functions.end())
-        for (const auto& entry : s->second) out.push_back(entry.first);
+        for (const auto& entry : s->second)
+            if (!entry.second.multiVolume) out.push_back(entry.first);
     return out;
 }
 

@@ -17,6 +17,7 @@
 #include <osgUtil/CullVisitor>
 
 #include <algorithm>
+#include <limits>
 #include <stdexcept>
 
 namespace volren {
@@ -47,7 +48,44 @@ struct VolumeScene::Proxy
     unsigned int lastCull = 0;
 };
 
+struct VolumeScene::Candidate
+{
+    VolumeNode* node;
+    osg::Matrix matrix;         ///< node -> VolumeScene
+    SceneOffer offer;           ///< what the scene offers it
+    Composition composition;    ///< its own composition
+    osg::BoundingBoxd bound;    ///< its box in the VolumeScene's axes
+};
+
 namespace {
+
+/// Groups of candidates whose boxes' bounds overlap (transitively), each in scene order.
+template <typename C>
+std::vector<std::vector<const C*>> overlapGroups(const std::vector<C>& candidates)
+{
+    std::vector<std::size_t> group(candidates.size());
+    for (std::size_t i = 0; i < group.size(); ++i) group[i] = i;
+    auto root = [&](std::size_t i) {
+        while (group[i] != i) i = group[i] = group[group[i]];
+        return i;
+    };
+    auto overlap = [](const osg::BoundingBoxd& a, const osg::BoundingBoxd& b) {
+        for (int axis = 0; axis < 3; ++axis)
+            if (!(a._min[axis] < b._max[axis] && b._min[axis] < a._max[axis])) return false;
+        return true;
+    };
+    for (std::size_t i = 0; i < candidates.size(); ++i)
+        for (std::size_t j = i + 1; j < candidates.size(); ++j)
+            if (overlap(candidates[i].bound, candidates[j].bound)) group[root(j)] = root(i);
+    std::vector<std::vector<const C*>> out;
+    std::map<std::size_t, std::size_t> index;
+    for (std::size_t i = 0; i < candidates.size(); ++i) {
+        auto [it, added] = index.emplace(root(i), out.size());
+        if (added) out.emplace_back();
+        out[it->second].push_back(&candidates[i]);
+    }
+    return out;
+}
 
 /// Finds volumes, lights and clip shapes below a VolumeScene, with matrices relative to it.
 class SceneCollector : public osg::NodeVisitor
@@ -308,6 +346,12 @@ std::vector<std::pair<std::string, std::shared_ptr<const ComposedProgram>>> Volu
     std::vector<std::pair<std::string, std::shared_ptr<const ComposedProgram>>> out;
     for (const auto& [node, proxy] : _proxies)
         if (proxy.lastCull == _cullCount && proxy.program) out.emplace_back(node->getName(), proxy.program);
+    for (const auto& [nodes, proxy] : _sets) {
+        if (proxy.lastCull != _cullCount || !proxy.program) continue;
+        std::string names;
+        for (const VolumeNode* node : nodes) names += (names.empty() ? "" : " + ") + node->getName();
+        out.emplace_back(names, proxy.program);
+    }
     return out;
 }
 
@@ -333,14 +377,10 @@ osg::Texture* VolumeScene::volumeTexture(const Volume& volume, bool nearest)
     return gl.texture.get();
 }
 
-VolumeScene::Proxy& VolumeScene::updateProxy(VolumeNode& node, const SceneOffer& offer)
+VolumeScene::Proxy& VolumeScene::proxyGeometry(Proxy& proxy, const osg::Vec3d& boxSize, const ComposedProgram& program)
 {
-    const Volume& volume = *node.getVolume();
-    const TransferFunction& tf = *node.getTransferFunction();
-    Proxy& proxy = _proxies[&node];
-
-    if (!proxy.geometry || proxy.boxSize != volume.worldSize()) {
-        proxy.boxSize = volume.worldSize();
+    if (!proxy.geometry || proxy.boxSize != boxSize) {
+        proxy.boxSize = boxSize;
         proxy.geometry = makeBoxGeometry(proxy.boxSize);
         osg::ref_ptr<osg::Geode> geode = new osg::Geode;
         geode->addDrawable(proxy.geometry.get());
@@ -349,64 +389,155 @@ VolumeScene::Proxy& VolumeScene::updateProxy(VolumeNode& node, const SceneOffer&
         proxy.geometry->getOrCreateStateSet();
         proxy.key.clear();
     }
-
-    std::shared_ptr<const ComposedProgram> program =
-        _compositor.program(forcedComposition ? *forcedComposition : chooseComposition(node, offer));
     osg::StateSet& ss = *proxy.geometry->getStateSet();
-    if (proxy.key != program->key) {  // new composition: state from scratch
+    if (proxy.key != program.key) {  // new composition: state from scratch
         ss.clear();
         ss.setAttributeAndModes(new osg::CullFace(osg::CullFace::FRONT), osg::StateAttribute::ON);
         ss.setAttributeAndModes(new osg::BlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA), osg::StateAttribute::ON);
         ss.setRenderBinDetails(10, "DepthSortedBin");
-        if (program->writesDepth) {  // an opaque surface: depth-tested and written like geometry
+        if (program.writesDepth) {  // an opaque surface: depth-tested and written like geometry
             ss.setAttributeAndModes(new osg::Depth(osg::Depth::LESS, 0.0, 1.0, true), osg::StateAttribute::ON);
         } else {
             ss.setMode(GL_DEPTH_TEST, osg::StateAttribute::OFF);
         }
-        ss.setAttributeAndModes(program->program.get(), osg::StateAttribute::ON);
-        proxy.key = program->key;
-        proxy.program = program;
+        ss.setAttributeAndModes(program.program.get(), osg::StateAttribute::ON);
+        proxy.key = program.key;
     }
+    return proxy;
+}
+
+VolumeScene::Proxy& VolumeScene::updateProxy(VolumeNode& node, const SceneOffer& offer, const Composition& composition)
+{
+    const Volume& volume = *node.getVolume();
+    std::shared_ptr<const ComposedProgram> program = _compositor.program(composition);
+    Proxy& proxy = proxyGeometry(_proxies[&node], volume.worldSize(), *program);
+    proxy.program = program;
+    BindContext context{node, volume, *node.getTransferFunction(), node.settings, effectiveSampleDistance(node),
+                        *proxy.geometry->getStateSet(), program->textureUnits, {}, offer.lights, {}, "", -1, {},
+                        program->writesDepth, [this](const Volume& v, bool nearest) { return volumeTexture(v, nearest); },
+                        volume.worldSize(), "", {}};
+    bind(context, *program, offer, -1);
+    return proxy;
+}
+
+bool VolumeScene::canShareRay(const Composition& composition)
+{
+    const std::string traversal = composition.functionFor("RayTraversal");
+    return (traversal == "dvr_front_to_back" || traversal == "dvr_back_to_front") &&
+           composition.functionFor("RaySetup") != "null";
+}
+
+VolumeScene::Proxy& VolumeScene::updateSetProxy(const std::vector<const Candidate*>& members)
+{
+    // The set's box: the bound of the members' boxes, axis-aligned in the VolumeScene.
+    osg::BoundingBoxd bound;
+    for (const Candidate* c : members) bound.expandBy(c->bound);
+    const osg::Vec3d size = bound._max - bound._min;
+    const osg::Matrixd setTextureToScene =
+        osg::Matrixd::translate(-0.5, -0.5, -0.5) * osg::Matrixd::scale(size) * osg::Matrixd::translate(bound.center());
+
+    // The set's own slots: its box, its traversal, the first member's jitter, the depth of opaque
+    // geometry; everything a sample needs comes from the members' compositions.
+    Composition set;
+    for (const SlotInfo& slot : slots())
+        if (!slot.isTemplate) set.choice[slot.name] = "null";
+    set.choice["RaySetup"] = "box_intersection";
+    set.choice["RayTraversal"] = "sum_of_media";
+    set.choice["Jitter"] = members.front()->composition.functionFor("Jitter");
+    double step = std::numeric_limits<double>::infinity();
+    double threshold = 1.0;
+    bool depth = false;
+    std::vector<const VolumeNode*> nodes;
+    for (const Candidate* c : members) {
+        Composition m = c->composition;
+        m.choice["RaySetup"] = "box_intersection";
+        m.choice["Jitter"] = "null";
+        m.choice["Acceleration"] = "null";
+        std::vector<std::string>& rays = m.instances["ClipRay"];
+        const auto d = std::find(rays.begin(), rays.end(), "depth");
+        if (d != rays.end()) depth = true, rays.erase(d);
+        set.members.push_back(m);
+        const osg::Vec3d scale = c->matrix.getScale();  // member-local steps in scene units
+        step = std::min(step, effectiveSampleDistance(*c->node) * std::min({scale.x(), scale.y(), scale.z()}));
+        threshold = std::min(threshold, c->node->settings.earlyTerminationThreshold);
+        nodes.push_back(c->node);
+    }
+    if (depth) set.instances["ClipRay"] = {"depth"};
+
+    std::shared_ptr<const ComposedProgram> program = _compositor.program(set);
+    Proxy& proxy = proxyGeometry(_sets[nodes], size, *program);
+    proxy.program = program;
+    osg::StateSet& ss = *proxy.geometry->getStateSet();
+    auto texture = [this](const Volume& v, bool nearest) { return volumeTexture(v, nearest); };
+
+    const Candidate& first = *members.front();
+    RenderSettings setSettings = first.node->settings;
+    setSettings.earlyTerminationThreshold = threshold;
+    BindContext setContext{*first.node, *first.node->getVolume(), *first.node->getTransferFunction(), setSettings, step,
+                           ss, program->textureUnits, {}, {}, {}, "", -1, {}, false, texture, size, "", {}};
+    bind(setContext, *program, SceneOffer{}, -1);
+    for (std::size_t k = 0; k < members.size(); ++k) {
+        const Candidate& c = *members[k];
+        const Volume& volume = *c.node->getVolume();
+        SceneOffer offer = c.offer;
+        offer.opaqueGeometry = false;
+        const osg::Matrixd memberTextureToScene = textureToLocal(volume) * c.matrix;
+        BindContext context{*c.node, volume, *c.node->getTransferFunction(), c.node->settings,
+                            effectiveSampleDistance(*c.node), ss, program->textureUnits, {}, offer.lights, {}, "", -1,
+                            {}, false, texture, volume.worldSize(), "_v" + std::to_string(k),
+                            setTextureToScene * osg::Matrixd::inverse(memberTextureToScene)};
+        bind(context, *program, offer, int(k));
+    }
+    return proxy;
+}
+
+void VolumeScene::bind(BindContext& context, const ComposedProgram& program, const SceneOffer& offer, int member)
+{
+    std::vector<const Binding*> mine;
+    for (const Binding& b : program.bindings)
+        if (b.member == member) mine.push_back(&b);
+    auto needs = [&](AuxData aux) {
+        for (const Binding* b : mine)
+            if (std::find(b->function->needs.begin(), b->function->needs.end(), aux) != b->function->needs.end())
+                return true;
+        return false;
+    };
 
     // Auxiliary data: only what the composition's implementations ask for.
-    BindContext context{node, volume, tf, node.settings, effectiveSampleDistance(node), ss, program->textureUnits,
-                        {}, offer.lights, {}, "", -1, {}, program->writesDepth,
-                        [this](const Volume& v, bool nearest) { return volumeTexture(v, nearest); }};
-    if (program->needs(AuxData::VolumeTexture)) context.aux[AuxData::VolumeTexture] = volumeTexture(volume, false);
+    if (needs(AuxData::VolumeTexture)) context.aux[AuxData::VolumeTexture] = volumeTexture(context.volume, false);
     for (bool premultiplied : {false, true}) {
-        if (!program->needs(premultiplied ? AuxData::PremultipliedTable : AuxData::TransferFunctionTable)) continue;
-        TableGL& table = _tables[{&tf, premultiplied}];
-        if (!table.texture || table.modified != tf.modifiedCount()) {
-            table.transfer = &tf;
-            table.texture = makeTransferFunctionTexture(tf, premultiplied);
-            table.modified = tf.modifiedCount();
+        if (!needs(premultiplied ? AuxData::PremultipliedTable : AuxData::TransferFunctionTable)) continue;
+        TableGL& table = _tables[{&context.transfer, premultiplied}];
+        if (!table.texture || table.modified != context.transfer.modifiedCount()) {
+            table.transfer = &context.transfer;
+            table.texture = makeTransferFunctionTexture(context.transfer, premultiplied);
+            table.modified = context.transfer.modifiedCount();
         }
         table.lastCull = _cullCount;
         context.aux[premultiplied ? AuxData::PremultipliedTable : AuxData::TransferFunctionTable] = table.texture;
     }
-    for (const Binding& b : program->bindings)
-        if (b.instance < 0) context.chosen[b.function->slot] = b.function->name;
+    for (const Binding* b : mine)
+        if (b->instance < 0) context.chosen[b->function->slot] = b->function->name;
 
     // Template instances, in the order chooseComposition made them: ClipRay's are the planes;
     // ClipPosition's are the planes clipped per sample (when rays are not clipped) and the shapes.
     std::size_t rayCount = 0, positionCount = 0;
-    for (const Binding& b : program->bindings) {
-        rayCount += b.function->slot == "ClipRay" && b.instance >= 0;
-        positionCount += b.function->slot == "ClipPosition" && b.instance >= 0;
+    for (const Binding* b : mine) {
+        rayCount += b->function->slot == "ClipRay" && b->instance >= 0;
+        positionCount += b->function->slot == "ClipPosition" && b->instance >= 0;
     }
     const std::vector<ClipInfo> rayClips = rayCount ? offer.planes : std::vector<ClipInfo>();
     std::vector<ClipInfo> positionClips;
     if (positionCount == offer.planes.size() + offer.shapes.size() && rayCount == 0) positionClips = offer.planes;
     if (positionCount) positionClips.insert(positionClips.end(), offer.shapes.begin(), offer.shapes.end());
 
-    for (const Binding& b : program->bindings) {
-        if (!b.function->bind) continue;
-        context.suffix = b.suffix;
-        context.instance = b.instance;
-        context.clips = b.function->slot == "ClipRay" ? rayClips : positionClips;
-        b.function->bind(context);
+    for (const Binding* b : mine) {
+        if (!b->function->bind) continue;
+        context.suffix = b->suffix;
+        context.instance = b->instance;
+        context.clips = b->function->slot == "ClipRay" ? rayClips : positionClips;
+        b->function->bind(context);
     }
-    return proxy;
 }
 
 void VolumeScene::traverse(osg::NodeVisitor& nv)
@@ -421,49 +552,84 @@ void VolumeScene::traverse(osg::NodeVisitor& nv)
         OSG_WARN << "volren: " << collector.lights.size() << " lights; volumes use the first " << maxLights << std::endl;
     const osg::Matrix sceneModelView = *cv->getModelViewMatrix();
 
+    // Each volume's offer and composition, and its box's bound in the VolumeScene's axes.
+    std::vector<Candidate> candidates;
+    for (auto& [node, matrix] : collector.volumes) {
+        Candidate c{node, matrix, offerFor(*node, matrix, collector, sceneModelView), {}, {}};
+        c.composition = forcedComposition ? *forcedComposition : chooseComposition(*node, c.offer);
+        const osg::Matrixd texToScene = textureToLocal(*node->getVolume()) * matrix;
+        for (int i = 0; i < 8; ++i) c.bound.expandBy(osg::Vec3d(i & 1, (i >> 1) & 1, (i >> 2) & 1) * texToScene);
+        candidates.push_back(std::move(c));
+    }
+
     std::lock_guard<std::mutex> lock(_mutex);
     ++_cullCount;
     _screen.beginCull(*cv, _cullCount);
     std::set<std::string> keys;
-    for (auto& [node, matrix] : collector.volumes) {
-        Proxy* proxy = nullptr;
-        try {
-            proxy = &updateProxy(*node, offerFor(*node, matrix, collector, sceneModelView));
-        } catch (const std::exception& e) {
-            OSG_WARN << "volren: cannot draw volume '" << node->getName() << "': " << e.what() << std::endl;
-            continue;
+    // A core profile needs buffer objects and a vertex array object. A compatibility context
+    // gets plain client arrays, as OSG 3.6 mishandles both there: display-list models drawn
+    // after a VAO drawable vanish from the next frame on. OSG's attribute aliasing, which a core
+    // profile needs, tells the two apart.
+    const bool core = cv->getState() && cv->getState()->getUseVertexAttributeAliasing();
+    auto draw = [&](Proxy& proxy, const osg::Matrix& matrix, const VolumeNode* node) {
+        proxy.lastCull = _cullCount;
+        if (proxy.geometry->getUseVertexArrayObject() != core) {
+            proxy.geometry->setUseVertexBufferObjects(core);
+            proxy.geometry->setUseVertexArrayObject(core);
         }
-        proxy->lastCull = _cullCount;
-        // A core profile needs buffer objects and a vertex array object. A compatibility context
-        // gets plain client arrays, as OSG 3.6 mishandles both there: display-list models drawn
-        // after a VAO drawable vanish from the next frame on, and a new scene's first frame can draw
-        // a proxy from a reused orphaned buffer object of the scene before (nothing shows).
-        // OSG's attribute aliasing, which a core profile needs, tells the two apart.
-        const bool core = cv->getState() && cv->getState()->getUseVertexAttributeAliasing();
-        if (proxy->geometry->getUseVertexArrayObject() != core) {
-            proxy->geometry->setUseVertexBufferObjects(core);
-            proxy->geometry->setUseVertexArrayObject(core);
-        }
-        proxy->transform->setMatrix(matrix);
-        keys.insert(proxy->key);
+        proxy.transform->setMatrix(matrix);
+        keys.insert(proxy.key);
         // Per-camera screen data of the composition: bound by state pushed around the proxy.
         int pushed = 0;
-        if (proxy->program->needs(AuxData::DepthTexture)) {
-            cv->pushStateSet(_screen.depthState(*cv, proxy->program->textureUnits.at("volren_depthTexture")));
+        if (proxy.program->needs(AuxData::DepthTexture)) {
+            cv->pushStateSet(_screen.depthState(*cv, proxy.program->textureUnits.at("volren_depthTexture")));
             ++pushed;
         }
-        if (proxy->program->needs(AuxData::EntryPoints)) {
-            cv->pushStateSet(_screen.entryState(*cv, node, *proxy->geometry, proxy->boxSize, matrix));
+        if (proxy.program->needs(AuxData::EntryPoints)) {
+            cv->pushStateSet(_screen.entryState(*cv, node, *proxy.geometry, proxy.boxSize, matrix));
             ++pushed;
         }
-        proxy->transform->accept(*cv);
+        proxy.transform->accept(*cv);
         for (; pushed > 0; --pushed) cv->popStateSet();
+    };
+    for (const std::vector<const Candidate*>& group : overlapGroups(candidates)) {
+        const bool shareRay = group.size() > 1 && !forcedComposition &&
+                              std::all_of(group.begin(), group.end(),
+                                          [](const Candidate* c) { return canShareRay(c->composition); });
+        if (shareRay) {
+            try {
+                Proxy& proxy = updateSetProxy(group);
+                osg::BoundingBox bound;
+                for (const Candidate* c : group) bound.expandBy(c->bound);
+                draw(proxy, osg::Matrix::translate(bound.center()), nullptr);
+                continue;
+            } catch (const std::exception& e) {
+                OSG_WARN << "volren: cannot draw the overlapping volumes '" << group.front()->node->getName()
+                         << "', ... as one set (drawn one by one): " << e.what() << std::endl;
+            }
+        } else if (group.size() > 1) {
+            std::vector<const VolumeNode*> nodes;
+            for (const Candidate* c : group) nodes.push_back(c->node);
+            if (_warnedOverlaps.insert(nodes).second)
+                OSG_WARN << "volren: volume '" << group.front()->node->getName() << "' and " << group.size() - 1
+                         << " other(s) overlap but not all composite emission-absorption (or a composition is "
+                            "forced); they are drawn one after another, which is exact only where they do not overlap"
+                         << std::endl;
+        }
+        for (const Candidate* c : group) {
+            try {
+                draw(updateProxy(*c->node, c->offer, c->composition), c->matrix, c->node);
+            } catch (const std::exception& e) {
+                OSG_WARN << "volren: cannot draw volume '" << c->node->getName() << "': " << e.what() << std::endl;
+            }
+        }
     }
     _lastKeys.assign(keys.begin(), keys.end());
 
     // Forget nodes that have left the scene, and GL data no composition used lately.
     auto stale = [this](unsigned int last) { return _cullCount - last > 2; };
     for (auto it = _proxies.begin(); it != _proxies.end();) it = stale(it->second.lastCull) ? _proxies.erase(it) : std::next(it);
+    for (auto it = _sets.begin(); it != _sets.end();) it = stale(it->second.lastCull) ? _sets.erase(it) : std::next(it);
     for (auto it = _volumeTextures.begin(); it != _volumeTextures.end();)
         it = stale(it->second.lastCull) ? _volumeTextures.erase(it) : std::next(it);
     for (auto it = _tables.begin(); it != _tables.end();) it = stale(it->second.lastCull) ? _tables.erase(it) : std::next(it);
@@ -473,7 +639,11 @@ void VolumeScene::traverse(osg::NodeVisitor& nv)
 void VolumeScene::checkPrograms(osg::State& state) const
 {
     std::lock_guard<std::mutex> lock(_mutex);
-    for (const auto& [node, proxy] : _proxies) {
+    std::vector<const Proxy*> all;
+    for (const auto& entry : _proxies) all.push_back(&entry.second);
+    for (const auto& entry : _sets) all.push_back(&entry.second);
+    for (const Proxy* p : all) {
+        const Proxy& proxy = *p;
         if (!proxy.program) continue;
         const osg::Program* program = proxy.program->program.get();
         osg::Program::PerContextProgram* pcp = program->getPCP(state);

@@ -18,6 +18,9 @@ struct Composition
     std::map<std::string, std::string> choice;                  ///< slot -> implementation
     std::map<std::string, std::vector<std::string>> instances;  ///< template slot -> one per shape
     unsigned int lightCount = 0;                                ///< lights the shading loops over
+    /// A multi-volume set: one composition per member (their sample slots, clip planes and
+    /// lights), marched along one ray by this composition's RayTraversal (`sum_of_media`).
+    std::vector<Composition> members;
 
     /// Full key "Slot=impl;...;ClipPosition=[box,plane];lights=N;" over every slot, defaults
     /// filled in; programs are cached by the whole key.
@@ -32,6 +35,8 @@ struct Binding
     const ShaderFunction* function = nullptr;
     std::string suffix;  ///< "_k" for template instance k, else ""
     int instance = -1;   ///< k, or -1 for ordinary slots
+    int member = -1;     ///< multi-volume sets: the member it belongs to, -1 for the set's own
+    std::string memberSuffix;  ///< "_v<member>", or "" for the set's own (and single volumes)
 };
 
 /// A program for one composition, with what binding needs.

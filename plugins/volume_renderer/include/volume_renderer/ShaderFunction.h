@@ -76,10 +76,18 @@ struct BindContext
     bool writesDepth = false;            ///< the composition's traversal reports surface hits
     /// Texture of a volume (shared per Volume); `nearest` selects nearest-voxel filtering.
     std::function<osg::Texture*(const Volume&, bool nearest)> volumeTexture;
+    /// Size of the box the proxy draws; zero means the volume's own box (a multi-volume set's
+    /// program draws the union of its members' boxes).
+    osg::Vec3d boxSize;
+    /// "_v<k>" while binding member k of a multi-volume set, else "" (added after `suffix`).
+    std::string member;
+    /// Multi-volume sets: the set box's texture space -> this member's texture space.
+    osg::Matrixd setToMember;
 
-    /// Name of `base` for the instance being bound (adds the template suffix).
-    std::string name(const std::string& base) const { return base + suffix; }
-    /// Runs `bind(*this)` with the template suffix off, for uniforms declared `shared`.
+    /// Name of `base` for the instance being bound (adds the template and member suffixes).
+    std::string name(const std::string& base) const { return base + suffix + member; }
+    /// Runs `bind(*this)` with the template suffix off, for uniforms declared `shared` (a
+    /// multi-volume member keeps its member suffix).
     template <typename F>
     void unsuffixed(F bind)
     {
@@ -143,6 +151,9 @@ struct ShaderFunction
     std::function<void(BindContext&)> bind;  ///< sets this frame's uniform values and textures
     bool writesDepth = false;           ///< RayTraversal: reports a surface hit (isosurface)
     bool single = false;                ///< template slots: at most one instance per composition
+    /// Part of multi-volume set programs only (the set's traversal, the per-member glue): left
+    /// out of ShaderFunctionRegistry::names(), so single-volume compositions never pick it.
+    bool multiVolume = false;
     /// Slots this implementation calls; empty = any. The scene analysis makes slots that no
     /// chosen implementation calls null, so they cost nothing.
     std::vector<std::string> calls = {};

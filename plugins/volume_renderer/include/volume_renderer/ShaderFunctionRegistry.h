@@ -31,7 +31,8 @@ public:
     void add(ShaderFunction function);
     /// The implementation `name` of `slot`, or null.
     const ShaderFunction* find(const std::string& slot, const std::string& name) const;
-    /// Names of the implementations of `slot`.
+    /// Names of the implementations of `slot` that single-volume compositions may choose (the
+    /// multi-volume set functions are left out).
     std::vector<std::string> names(const std::string& slot) const;
 
     /// Directories searched for GLSL files, first match wins: $VOLREN_SHADER_PATH
@@ -57,5 +58,8 @@ void registerGradientFunctions(ShaderFunctionRegistry& registry);
 void registerIlluminationFunctions(ShaderFunctionRegistry& registry);
 void registerShadowingFunctions(ShaderFunctionRegistry& registry);
 void registerAccelerationFunctions(ShaderFunctionRegistry& registry);
+/// The set traversal (RayTraversal "sum_of_media") and per-member glue (MultiVolume "member")
+/// of multi-volume set programs.
+void registerMultiVolumeFunctions(ShaderFunctionRegistry& registry);
 
 }  // namespace volren

@@ -32,6 +32,10 @@ struct SceneOffer
 /// volume's composition is chosen, and a ray-cast proxy (the volume's box, back faces) is drawn
 /// after the opaque geometry, whose depth ends the rays (ScreenPasses). Nothing a volume does
 /// not use is compiled, bound or allocated.
+/// Volumes whose boxes overlap form a multi-volume set when all of them composite
+/// emission-absorption: one program for the set marches one ray through all of them, their
+/// media adding where they overlap (Composition::members). Other volumes, and overlapping ones
+/// with other traversals (MIP, isosurface, ...), are drawn box by box, sorted back to front.
 class VolumeScene : public osg::Group
 {
 public:
@@ -59,6 +63,9 @@ public:
 
     /// The composition for `node` given what the scene offers it and the pass settings.
     Composition chooseComposition(const VolumeNode& node, const SceneOffer& offer) const;
+    /// Whether a volume drawn with `composition` can share a ray with overlapping volumes
+    /// (emission-absorption traversals).
+    static bool canShareRay(const Composition& composition);
     /// Step in world units for `node`: its setting, bounded so no ray exceeds maxSteps samples.
     static double effectiveSampleDistance(const VolumeNode& node);
     /// Most samples one ray may take; finer settings are coarsened to this, with a warning.
@@ -66,9 +73,11 @@ public:
     /// Largest number of lights passed to one volume (more are ignored, with a warning).
     static constexpr unsigned int maxLights = 8;
 
-    /// Composition keys of the volumes drawn in the last cull traversal (sorted, unique).
+    /// Composition keys of the volumes and multi-volume sets drawn in the last cull traversal
+    /// (sorted, unique).
     std::vector<std::string> compositionKeys() const;
-    /// The program of each volume drawn in the last cull traversal, with the node's name.
+    /// The program of each volume (or set: names joined by " + ") drawn in the last cull
+    /// traversal, with the node's name.
     std::vector<std::pair<std::string, std::shared_ptr<const ComposedProgram>>> programs() const;
     /// The compositor that builds this scene's programs.
     ShaderCompositor& compositor() { return _compositor; }
@@ -85,13 +94,20 @@ private:
     struct Proxy;
     struct VolumeGL;
     struct TableGL;
-    Proxy& updateProxy(VolumeNode& node, const SceneOffer& offer);
+    struct Candidate;
+    Proxy& updateProxy(VolumeNode& node, const SceneOffer& offer, const Composition& composition);
+    Proxy& updateSetProxy(const std::vector<const Candidate*>& members);
+    /// Binds the parts of `program` that belong to `member` (-1: a single volume, or a set's own).
+    void bind(BindContext& context, const ComposedProgram& program, const SceneOffer& offer, int member);
+    Proxy& proxyGeometry(Proxy& proxy, const osg::Vec3d& boxSize, const ComposedProgram& program);
     osg::Texture* volumeTexture(const Volume& volume, bool nearest);
 
     ShaderCompositor _compositor;
     ScreenPasses _screen;
     mutable std::mutex _mutex;
     std::map<const VolumeNode*, Proxy> _proxies;
+    std::map<std::vector<const VolumeNode*>, Proxy> _sets;  ///< multi-volume sets, by member
+    std::set<std::vector<const VolumeNode*>> _warnedOverlaps;
     std::map<std::pair<const Volume*, bool>, VolumeGL> _volumeTextures;
     std::map<std::pair<const TransferFunction*, bool>, TableGL> _tables;
     std::vector<std::string> _lastKeys;

@@ -11,7 +11,7 @@ const std::vector<UniformDecl> geometry = {{"volren_worldSize", "vec3", ""}, {"v
 void bindGeometry(BindContext& c)
 {
     const osg::Vec3i& d = c.volume.dims();
-    c.uniform("volren_worldSize", osg::Vec3f(c.volume.worldSize()));
+    c.uniform("volren_worldSize", osg::Vec3f(c.boxSize.length2() > 0.0 ? c.boxSize : c.volume.worldSize()));
     c.uniform("volren_dims", osg::Vec3f(float(d.x()), float(d.y()), float(d.z())));
 }
 
