@@ -29,6 +29,7 @@ struct RenderOptions
     osg::Vec3d background{0.0, 0.0, 0.0};   ///< --background r,g,b in [0,1]
     std::vector<std::pair<std::string, std::string>> settings;  ///< --set KEY=VALUE
     int frames = 1;                         ///< --frames N
+    int samples = 1;                        ///< --samples N: multisampled framebuffer (MSAA)
     std::string statsFile;                  ///< --stats FILE.json
 };
 

@@ -33,7 +33,7 @@ int renderCommand(const std::vector<std::string>& args, bool defaultRun)
     const std::string input = inputName(options);
 
     osg::ref_ptr<osg::Node> scene = loadScene(options);
-    OffscreenRenderer renderer(options.width, options.height);
+    OffscreenRenderer renderer(options.width, options.height, options.samples);
     renderer.setScene(scene.get());
     renderer.setBackground(osg::Vec3(options.background));
     setUpCamera(*renderer.camera(), *scene, options, double(options.width) / options.height);

@@ -4,6 +4,7 @@
 #include <volume_renderer/VolumeScene.h>
 
 #include <osgGA/TrackballManipulator>
+#include <osg/DisplaySettings>
 #include <osgViewer/Viewer>
 #include <osgViewer/ViewerEventHandlers>
 
@@ -20,6 +21,7 @@ int viewCommand(const std::vector<std::string>& args)
         throw std::runtime_error("volren view needs a display and DISPLAY is not set; use 'volren render' for images");
 
     osg::ref_ptr<VolumeScene> root = loadScene(options);
+    if (options.samples > 1) osg::DisplaySettings::instance()->setNumMultiSamples(options.samples);  // an MSAA window
     osgViewer::Viewer viewer;
     viewer.setThreadingModel(osgViewer::ViewerBase::SingleThreaded);
     viewer.setUpViewInWindow(50, 50, options.width, options.height);

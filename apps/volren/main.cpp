@@ -15,7 +15,7 @@ const char* const usage =
     "  volren render INPUT -o OUT.png [--size WxH] [--eye x,y,z --center x,y,z --up x,y,z]\n"
     "                [--fov DEG | --ortho HEIGHT] [--background r,g,b]\n"
     "                [--tf FILE.tf | --tf PRESETS.json[#NAME] [--tf-keep-range]]\n"
-    "                [--set KEY=VALUE ...] [--frames N] [--stats FILE.json]\n"
+    "                [--set KEY=VALUE ...] [--frames N] [--samples N] [--stats FILE.json]\n"
     "  volren reference INPUT -o OUT.exr [render's options]   CPU reference image (the integral)\n"
     "  volren compare A B [--threshold T] [--diff OUT]   RMSE, PSNR, max error, pixels over T\n"
     "  volren info VOLUMEFILE          dims, type, spacing, value range, histogram\n"

@@ -80,6 +80,83 @@ TEST_F(OpaqueGeometry, SphereAtTheCentreIsAttenuatedByTheMediumInFrontOfEachPixe
     EXPECT_GT(outside, 1000);
 }
 
+TEST_F(OpaqueGeometry, MultisampledFramebufferKeepsTheAttenuationAndSmoothsTheSilhouette)
+{
+    // The sphere again, drawn into a 4x multisampled framebuffer: the depth the rays end at is
+    // resolved from it (a plain copy is a GL error there), so inside the silhouette every pixel
+    // is attenuated as before; on the silhouette partly covered pixels blend sphere and medium,
+    // values a single-sampled frame never has (between 0 and the sphere's ~0.17).
+    const double radius = 5.0;
+    osg::ref_ptr<VolumeScene> scene = sceneWith(flatSphere({0, 0, 0}, float(radius), osg::Vec4(1, 1, 1, 1)).get());
+    const int size = 64;
+    const double view = 20.0, pixel = view / size;
+    auto partlyCovered = [&](const Pixels& img) {
+        int count = 0;
+        for (int y = 0; y < size; ++y)
+            for (int x = 0; x < size; ++x) {
+                const double px = (x + 0.5) * pixel - view / 2, py = (y + 0.5) * pixel - view / 2;
+                const double r = std::sqrt(px * px + py * py);
+                count += std::abs(r - radius) < pixel && img.at(x, y).g() > 0.01f && img.at(x, y).g() < 0.12f;
+            }
+        return count;
+    };
+    EXPECT_EQ(partlyCovered(renderOrthoFromPlusZ(scene.get(), size, size, view)), 0) << "single-sampled";
+
+    renderer(size, size, 4);  // the renders below use it
+    const Pixels img = renderOrthoFromPlusZ(scene.get(), size, size, view);
+    ASSERT_EQ(renderer(size, size).samples(), 4);
+    renderer(size, size, 1);  // the other tests draw single-sampled
+    EXPECT_GT(partlyCovered(img), 20) << "multisampled: the silhouette is antialiased";
+    int inside = 0;
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            const double px = (x + 0.5) * pixel - view / 2, py = (y + 0.5) * pixel - view / 2;
+            const double r = std::sqrt(px * px + py * py);
+            if (r >= radius - 2 * pixel) continue;
+            const double front = std::sqrt(radius * radius - r * r);
+            // One ray per pixel ends at the depth the resolve took, one sample's (up to half a pixel
+            // diagonal from the centre): allow the attenuation's change over that distance.
+            const double expected = transmittance(n / 2.0 - front);
+            const double slope = expected * -std::log(1.0 - alpha) * r / front;  // |d expected / dr|
+            ASSERT_NEAR(img.at(x, y).g(), expected, 2e-3 + slope * pixel * std::sqrt(0.5))
+                << x << "," << y << " r " << r;
+            ++inside;
+        }
+    EXPECT_GT(inside, 500);
+}
+
+TEST_F(OpaqueGeometry, ViewportResizesAndOffsetsKeepTheDepthMixingExact)
+{
+    // One camera whose viewport shrinks to an offset part of the framebuffer and grows back, as a
+    // resized window's does: the depth texture follows the viewport's size and origin, so the
+    // square at z = 0 shows through half the box (0.8^8) in every frame.
+    osg::ref_ptr<VolumeScene> scene = sceneWith(flatSquare({0, 0, 0}, 4.0f, osg::Vec4(1, 1, 1, 1)).get());
+    OffscreenRenderer& r = renderer(64, 64);
+    r.setScene(scene.get());
+    r.setBackground({0, 0, 0});
+    r.camera()->setComputeNearFarMode(osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR);
+    r.camera()->setViewMatrix(osg::Matrixd::lookAt(osg::Vec3d(0, 0, 50), osg::Vec3d(0, 0, 0), osg::Vec3d(0, 1, 0)));
+    struct Frame { int x, y, w, h; };
+    for (const Frame f : {Frame{0, 0, 64, 64}, Frame{10, 20, 32, 24}, Frame{3, 1, 61, 40}, Frame{0, 0, 64, 64}}) {
+        r.camera()->setViewport(f.x, f.y, f.w, f.h);
+        const double h = 10.0, w = h * f.w / f.h;  // 20 world units high
+        r.camera()->setProjectionMatrix(osg::Matrixd::ortho(-w, w, -h, h, 1.0, 100.0));
+        const FrameTiming timing = r.renderFrame();
+        EXPECT_TRUE(timing.glErrors.empty());
+        // OSG reads the viewport's pixels back into the image, which takes the viewport's size.
+        ASSERT_EQ(r.image()->s(), f.w);
+        ASSERT_EQ(r.image()->t(), f.h);
+        const auto* rgba = reinterpret_cast<const osg::Vec4*>(r.image()->data());
+        const osg::Vec4& centre = rgba[(f.h / 2) * f.w + f.w / 2];
+        EXPECT_NEAR(centre.g(), transmittance(n / 2.0), 2e-4) << "viewport " << f.x << "," << f.y << " " << f.w << "x" << f.h;
+        // Beside the square (6 units from the centre): the whole box absorbs, nothing behind.
+        const osg::Vec4& beside = rgba[(f.h / 2) * f.w + f.w / 2 + int(std::lround(6.0 * f.h / 20.0))];
+        EXPECT_NEAR(beside.g(), 0.0, 1e-6);
+        EXPECT_NEAR(beside.a(), 1.0 - transmittance(n), 2e-4);
+    }
+    r.camera()->setViewport(0, 0, 64, 64);
+}
+
 TEST_F(OpaqueGeometry, SquareBehindIsAttenuatedByTheWholeBoxAndInFrontNotAtAll)
 {
     osg::ref_ptr<VolumeScene> behind = sceneWith(flatSquare({0, 0, -12.0f}, 4.0f, osg::Vec4(1, 0.5f, 0.25f, 1)).get());

@@ -6,6 +6,7 @@
 #include <osg/ShapeDrawable>
 #include <osg/Geometry>
 
+#include <algorithm>
 #include <memory>
 
 namespace volren::test {
@@ -14,11 +15,12 @@ namespace {
 std::unique_ptr<OffscreenRenderer> shared;
 }
 
-OffscreenRenderer& RenderFixture::renderer(int width, int height)
+OffscreenRenderer& RenderFixture::renderer(int width, int height, int samples)
 {
-    if (!shared || shared->width() != width || shared->height() != height) {
+    if (!shared || shared->width() != width || shared->height() != height ||
+        (samples > 0 && shared->samples() != samples)) {
         shared.reset();
-        shared = std::make_unique<OffscreenRenderer>(width, height);
+        shared = std::make_unique<OffscreenRenderer>(width, height, std::max(samples, 1));
     }
     return *shared;
 }

@@ -22,8 +22,9 @@ struct Pixels
 class RenderFixture : public ::testing::Test
 {
 public:
-    /// The shared renderer, created at `width` x `height` (re-created when the size changes).
-    static OffscreenRenderer& renderer(int width, int height);
+    /// The shared renderer, created at `width` x `height` with `samples` per pixel (re-created
+    /// when either changes; samples 0: as the current one, 1 for a new one).
+    static OffscreenRenderer& renderer(int width, int height, int samples = 0);
 
     /// Renders `scene` with an orthographic camera looking from +z down -z at the origin,
     /// showing `viewHeight` world units vertically; near/far fixed around the scene.

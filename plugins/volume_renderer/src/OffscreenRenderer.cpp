@@ -96,11 +96,12 @@ struct OffscreenRenderer::ErrorLog
     }
 };
 
-OffscreenRenderer::OffscreenRenderer(int width, int height) : _width(width), _height(height)
+OffscreenRenderer::OffscreenRenderer(int width, int height, int samples) : _samples(samples), _width(width), _height(height)
 {
     if (width <= 0 || height <= 0 || width > 16384 || height > 16384)
         throw std::runtime_error("image size must be 1..16384 pixels per side, got " + std::to_string(width) + "x" +
                                  std::to_string(height));
+    if (samples < 1 || samples > 64) throw std::runtime_error("samples must be 1..64, got " + std::to_string(samples));
     _context = std::make_unique<HeadlessContext>();
     _errors = std::make_unique<ErrorLog>();
     _errors->install(_context->coreProfile());
@@ -129,12 +130,10 @@ OffscreenRenderer::OffscreenRenderer(int width, int height) : _width(width), _he
     _image->allocateImage(width, height, 1, GL_RGBA, GL_FLOAT);
     _image->setInternalTextureFormat(GL_RGBA32F_ARB);
     cam->setViewport(0, 0, width, height);
-    cam->setRenderTargetImplementation(osg::Camera::FRAME_BUFFER_OBJECT);
-    cam->attach(osg::Camera::COLOR_BUFFER, _image.get());
-    cam->attach(osg::Camera::DEPTH_BUFFER, GL_DEPTH_COMPONENT24);
     _depth = new osg::Image;
     _depth->allocateImage(width, height, 1, GL_DEPTH_COMPONENT, GL_FLOAT);
     _depth->setInternalTextureFormat(GL_DEPTH_COMPONENT24);
+    attachBuffers();
     cam->setClearColor(osg::Vec4(0.0f, 0.0f, 0.0f, 0.0f));
     cam->setProjectionMatrixAsPerspective(30.0, double(width) / height, 0.1, 1000.0);
 
@@ -182,6 +181,7 @@ OffscreenRenderer::~OffscreenRenderer()
 {
     if (_viewer) {
         _context->makeCurrent();
+        _multisampled.reset();
         _viewer->setSceneData(nullptr);
         _scene = nullptr;
         _viewer->getCamera()->getGraphicsContext()->close(true);  // releases GL objects while current
@@ -193,12 +193,105 @@ void OffscreenRenderer::setReadDepth(bool read)
 {
     if (read == _readDepth) return;
     _readDepth = read;
+    attachBuffers();
+}
+
+/// A multisampled framebuffer the camera draws into as into an MSAA window's (it is the
+/// context's default framebuffer meanwhile), and a single-sampled one it is resolved into and
+/// read back from. Raw GL: OSG 3.6's own multisampled camera FBO is incomplete on Mesa.
+struct OffscreenRenderer::Multisampled
+{
+    const osg::GLExtensions* ext;
+    GLuint fbo[2] = {0, 0};               ///< multisampled, resolved
+    GLuint buffers[4] = {0, 0, 0, 0};     ///< colour and depth of each
+
+    Multisampled(const osg::GLExtensions* extensions, int width, int height, int samples) : ext(extensions)
+    {
+        if (!ext->glBlitFramebuffer || !ext->glRenderbufferStorageMultisample)
+            throw std::runtime_error("multisampling needs framebuffer blits and multisampled renderbuffers");
+        GLint most = 0;
+        glGetIntegerv(GL_MAX_SAMPLES, &most);
+        if (samples > most)
+            throw std::runtime_error(std::to_string(samples) + " samples asked, the driver offers at most " +
+                                     std::to_string(most));
+        ext->glGenFramebuffers(2, fbo);
+        ext->glGenRenderbuffers(4, buffers);
+        for (int i = 0; i < 2; ++i) {
+            const GLsizei n = i == 0 ? samples : 0;
+            ext->glBindRenderbuffer(GL_RENDERBUFFER_EXT, buffers[2 * i]);
+            ext->glRenderbufferStorageMultisample(GL_RENDERBUFFER_EXT, n, GL_RGBA32F_ARB, width, height);
+            ext->glBindRenderbuffer(GL_RENDERBUFFER_EXT, buffers[2 * i + 1]);
+            ext->glRenderbufferStorageMultisample(GL_RENDERBUFFER_EXT, n, GL_DEPTH_COMPONENT24, width, height);
+            ext->glBindFramebuffer(GL_FRAMEBUFFER_EXT, fbo[i]);
+            ext->glFramebufferRenderbuffer(GL_FRAMEBUFFER_EXT, GL_COLOR_ATTACHMENT0_EXT, GL_RENDERBUFFER_EXT, buffers[2 * i]);
+            ext->glFramebufferRenderbuffer(GL_FRAMEBUFFER_EXT, GL_DEPTH_ATTACHMENT_EXT, GL_RENDERBUFFER_EXT,
+                                           buffers[2 * i + 1]);
+            const GLenum status = ext->glCheckFramebufferStatus(GL_FRAMEBUFFER_EXT);
+            if (status != GL_FRAMEBUFFER_COMPLETE_EXT) {
+                release();
+                throw std::runtime_error("multisampled framebuffer incomplete (status " + std::to_string(status) + ")");
+            }
+        }
+        ext->glBindRenderbuffer(GL_RENDERBUFFER_EXT, 0);
+        ext->glBindFramebuffer(GL_FRAMEBUFFER_EXT, fbo[0]);
+    }
+    ~Multisampled() { release(); }
+
+    void release()
+    {
+        ext->glBindFramebuffer(GL_FRAMEBUFFER_EXT, 0);
+        ext->glDeleteFramebuffers(2, fbo);
+        ext->glDeleteRenderbuffers(4, buffers);
+        fbo[0] = fbo[1] = 0;
+    }
+
+    /// Resolves the frame and reads it into `colour` (RGBA float) and `depth` (when given).
+    void read(int width, int height, osg::Image& colour, osg::Image* depth) const
+    {
+        ext->glBindFramebuffer(GL_READ_FRAMEBUFFER_EXT, fbo[0]);
+        ext->glBindFramebuffer(GL_DRAW_FRAMEBUFFER_EXT, fbo[1]);
+        ext->glBlitFramebuffer(0, 0, width, height, 0, 0, width, height,
+                               GL_COLOR_BUFFER_BIT | (depth ? GL_DEPTH_BUFFER_BIT : 0), GL_NEAREST);
+        ext->glBindFramebuffer(GL_READ_FRAMEBUFFER_EXT, fbo[1]);
+        glReadBuffer(GL_COLOR_ATTACHMENT0_EXT);
+        glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, colour.data());
+        colour.dirty();
+        if (depth) {
+            glReadPixels(0, 0, width, height, GL_DEPTH_COMPONENT, GL_FLOAT, depth->data());
+            depth->dirty();
+        }
+        ext->glBindFramebuffer(GL_FRAMEBUFFER_EXT, fbo[0]);
+    }
+};
+
+void OffscreenRenderer::attachBuffers()
+{
+    // Single-sampled frames draw into OSG's camera FBO and are read straight into the images.
+    // Multisampled ones draw into the Multisampled framebuffer, made the context's default (set
+    // once: OSG's render stage does not switch between the two ways).
     osg::Camera* cam = _viewer->getCamera();
+    if (_samples > 1) {
+        if (_multisampled) return;  // reads the depth when asked, with no change of attachments
+        osg::GraphicsContext* gc = cam->getGraphicsContext();
+        if (!_context->makeCurrent()) throw std::runtime_error("EGL: cannot make the context current");
+        _multisampled = std::make_unique<Multisampled>(osg::GLExtensions::Get(gc->getState()->getContextID(), true),
+                                                       _width, _height, _samples);
+        gc->setDefaultFboId(_multisampled->fbo[0]);
+        cam->setRenderTargetImplementation(osg::Camera::FRAME_BUFFER);
+        cam->setDrawBuffer(GL_COLOR_ATTACHMENT0_EXT);
+        cam->setReadBuffer(GL_COLOR_ATTACHMENT0_EXT);
+        return;
+    }
+    cam->detach(osg::Camera::COLOR_BUFFER);
     cam->detach(osg::Camera::DEPTH_BUFFER);
-    if (read) cam->attach(osg::Camera::DEPTH_BUFFER, _depth.get());
+    cam->setRenderTargetImplementation(osg::Camera::FRAME_BUFFER_OBJECT);
+    cam->attach(osg::Camera::COLOR_BUFFER, _image.get());
+    if (_readDepth) cam->attach(osg::Camera::DEPTH_BUFFER, _depth.get());
     else cam->attach(osg::Camera::DEPTH_BUFFER, GL_DEPTH_COMPONENT24);
     cam->dirtyAttachmentMap();
 }
+
 
 void OffscreenRenderer::setScene(osg::Node* root)
 {
@@ -237,7 +330,9 @@ FrameTiming OffscreenRenderer::renderFrame()
     const auto start = std::chrono::steady_clock::now();
     while (glGetError() != GL_NO_ERROR) {}  // flags of earlier, unrelated calls
     _errors->messages.clear();
+    if (_multisampled) _multisampled->ext->glBindFramebuffer(GL_FRAMEBUFFER_EXT, _multisampled->fbo[0]);
     _viewer->frame();
+    if (_multisampled) _multisampled->read(_width, _height, *_image, _readDepth ? _depth.get() : nullptr);
     timing.gpuMs = _timer->collectMs();
     while (glGetError() != GL_NO_ERROR) {}
     timing.glErrors = _errors->messages;

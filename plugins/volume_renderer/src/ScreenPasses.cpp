@@ -9,6 +9,7 @@
 #include <osg/Geode>
 
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 
@@ -20,7 +21,9 @@ namespace volren {
 
 namespace {
 
-/// Copies the depth buffer of the current viewport into a depth texture of the same size.
+/// Copies the depth buffer of the current viewport into a depth texture of the same size. A
+/// multisampled framebuffer (MSAA window, multisampled camera FBO) cannot be copied from: it is
+/// resolved into the texture by a blit, which needs the texture in the framebuffer's depth format.
 class DepthCopy : public osg::Drawable
 {
 public:
@@ -38,14 +41,77 @@ public:
         const osg::Viewport* vp = state.getCurrentViewport();
         if (!vp || int(vp->width()) != _texture->getTextureWidth() || int(vp->height()) != _texture->getTextureHeight())
             return;  // sized at cull time; a mismatch means this camera's viewport changed since
-        state.applyTextureAttribute(0, _texture.get());  // allocates the storage on first use
-        glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, GLint(vp->x()), GLint(vp->y()), GLsizei(vp->width()),
-                            GLsizei(vp->height()));
+        const GLint x = GLint(vp->x()), y = GLint(vp->y());
+        const GLsizei w = GLsizei(vp->width()), h = GLsizei(vp->height());
+        GLint sampleBuffers = 0;
+        glGetIntegerv(GL_SAMPLE_BUFFERS, &sampleBuffers);
+        const osg::GLExtensions* ext = state.get<osg::GLExtensions>();
+        if (sampleBuffers == 0 || !ext->glBlitFramebuffer) {
+            state.applyTextureAttribute(0, _texture.get());  // allocates the storage on first use
+            glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, x, y, w, h);
+            return;
+        }
+        GLint readFbo = 0, drawFbo = 0;
+        glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &readFbo);
+        glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &drawFbo);
+        const GLenum format = depthFormatOf(readFbo != 0);
+        if (GLenum(_texture->getInternalFormat()) != format) {  // this camera's texture, drawn only here
+            _texture->setInternalFormat(GLint(format));
+            _texture->setSourceFormat(format == GL_DEPTH24_STENCIL8 || format == GL_DEPTH32F_STENCIL8 ? GL_DEPTH_STENCIL
+                                                                                                   : GL_DEPTH_COMPONENT);
+            _texture->dirtyTextureObject();
+        }
+        state.applyTextureAttribute(0, _texture.get());
+        GLuint& fbo = _resolve[state.getContextID()];
+        if (!fbo) ext->glGenFramebuffers(1, &fbo);
+        ext->glBindFramebuffer(GL_DRAW_FRAMEBUFFER_EXT, fbo);
+        const GLenum attachment = _texture->getSourceFormat() == GL_DEPTH_STENCIL ? GL_DEPTH_STENCIL_ATTACHMENT
+                                                                                 : GL_DEPTH_ATTACHMENT_EXT;
+        ext->glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER_EXT, attachment, GL_TEXTURE_2D,
+                                    _texture->getTextureObject(state.getContextID())->id(), 0);
+        glDrawBuffer(GL_NONE);
+        ext->glBlitFramebuffer(x, y, x + w, y + h, 0, 0, w, h, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+        ext->glBindFramebuffer(GL_DRAW_FRAMEBUFFER_EXT, GLuint(drawFbo));
+    }
+
+    void releaseGLObjects(osg::State* state) const override
+    {
+        osg::Drawable::releaseGLObjects(state);
+        if (!state) return;  // the ids die with their contexts
+        auto it = _resolve.find(state->getContextID());
+        if (it == _resolve.end()) return;
+        if (const osg::GLExtensions* ext = state->get<osg::GLExtensions>()) ext->glDeleteFramebuffers(1, &it->second);
+        _resolve.erase(it);
     }
 
 private:
     DepthCopy() = default;
+
+    /// The sized depth format of the bound read framebuffer (an FBO's depth attachment, or the
+    /// window's depth buffer).
+    static GLenum depthFormatOf(bool fbo)
+    {
+        // GL 3.0, which OSG's GLExtensions does not load.
+        using Query = void(GL_APIENTRY*)(GLenum, GLenum, GLenum, GLint*);
+        static const auto query = reinterpret_cast<Query>(osg::getGLExtensionFuncPtr("glGetFramebufferAttachmentParameteriv"));
+        if (!query) return GL_DEPTH_COMPONENT24;
+        GLint depthBits = 24, stencilBits = 0, type = GL_UNSIGNED_NORMALIZED;
+        const GLenum depth = fbo ? GL_DEPTH_ATTACHMENT_EXT : GLenum(GL_DEPTH);
+        const GLenum stencil = fbo ? GL_STENCIL_ATTACHMENT_EXT : GLenum(GL_STENCIL);
+        query(GL_READ_FRAMEBUFFER_EXT, depth, GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE, &depthBits);
+        query(GL_READ_FRAMEBUFFER_EXT, depth, GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, &type);
+        GLint stencilType = GL_NONE;
+        query(GL_READ_FRAMEBUFFER_EXT, stencil, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &stencilType);
+        if (stencilType != GL_NONE)
+            query(GL_READ_FRAMEBUFFER_EXT, stencil, GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE,
+                                                      &stencilBits);
+        if (type == GL_FLOAT) return stencilBits ? GL_DEPTH32F_STENCIL8 : GL_DEPTH_COMPONENT32F;
+        if (stencilBits) return GL_DEPTH24_STENCIL8;
+        return depthBits > 24 ? GL_DEPTH_COMPONENT32 : depthBits > 16 ? GL_DEPTH_COMPONENT24 : GL_DEPTH_COMPONENT16;
+    }
+
     osg::ref_ptr<osg::Texture2D> _texture;
+    mutable std::map<unsigned int, GLuint> _resolve;  ///< resolve FBO per context
 };
 
 /// Makes the image writes of the entry passes visible to the ray casters drawn after it.

@@ -28,8 +28,10 @@ struct FrameTiming
 class OffscreenRenderer
 {
 public:
-    /// Creates the EGL context and the viewer; throws std::runtime_error on failure.
-    OffscreenRenderer(int width, int height);
+    /// Creates the EGL context and the viewer; throws std::runtime_error on failure. With
+    /// `samples` > 1 the camera draws into a multisampled framebuffer (as into an MSAA window;
+    /// up to the driver's GL_MAX_SAMPLES), resolved before it is read back.
+    OffscreenRenderer(int width, int height, int samples = 1);
     ~OffscreenRenderer();
 
     /// Sets the scene; a root that is not a VolumeScene is wrapped in one.
@@ -50,6 +52,7 @@ public:
     const osg::Image* depthImage() const { return _readDepth ? _depth.get() : nullptr; }
     /// Whether frames also read back the depth buffer (off by default: it costs a read-back).
     void setReadDepth(bool read);
+    int samples() const { return _samples; }  ///< samples per pixel of the framebuffer
 
     /// OSG's state of the headless context (current on this thread).
     osg::State* state();
@@ -62,12 +65,16 @@ private:
     struct GpuTimer;
     struct ErrorLog;
     void useCoreProfileDefaults();
+    struct Multisampled;
+    void attachBuffers();
     std::unique_ptr<HeadlessContext> _context;
     osg::ref_ptr<osgViewer::Viewer> _viewer;
     osg::ref_ptr<VolumeScene> _scene;
     osg::ref_ptr<osg::Image> _image;
     osg::ref_ptr<osg::Image> _depth;
     bool _readDepth = false;
+    int _samples = 1;
+    std::unique_ptr<Multisampled> _multisampled;  ///< the framebuffer of multisampled frames
     osg::ref_ptr<GpuTimer> _timer;
     std::unique_ptr<ErrorLog> _errors;
     int _width, _height;
