@@ -142,6 +142,26 @@ TEST_F(MultiVolume, CameraInsideTheOverlapMarchesOnlyWhatLiesAhead)
     expectNear(p.at(20, 20), integrate({{4.0, {a, b}}, {8.0, {a}}}), 3e-3, "from inside the overlap");
 }
 
+TEST_F(MultiVolume, VolumesOneBehindTheOtherAreCompositedFrontOverBack)
+{
+    // B moved behind A along the view (boxes 4 units apart): two programs, drawn back to front,
+    // whichever comes first in the scene; the closed form is A's integral over B's.
+    for (const bool bFirst : {false, true}) {
+        osg::ref_ptr<VolumeScene> scene = twoMedia();
+        auto* tb = static_cast<osg::MatrixTransform*>(scene->getChild(1));
+        tb->setMatrix(osg::Matrix::translate(0, 0, -24));
+        if (bFirst) {
+            osg::ref_ptr<osg::Node> b = tb;
+            scene->removeChild(b.get());
+            scene->insertChild(0, b.get());
+        }
+        const Pixels p = renderOrthoFromPlusZ(scene.get(), 40, 40, 40.0);
+        EXPECT_EQ(scene->programs().size(), 2u);
+        expectNear(pixelAt(p, 0.5, 0.5), integrate({{16.0, {a}}, {4.0, {}}, {16.0, {b}}}), 2e-3,
+                   bFirst ? "B first in the scene" : "A first in the scene");
+    }
+}
+
 TEST_F(MultiVolume, VolumesApartOrWithOtherTraversalsAreDrawnOneByOne)
 {
     osg::ref_ptr<VolumeScene> apart = twoMedia();

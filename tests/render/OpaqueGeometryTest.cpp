@@ -157,6 +157,20 @@ TEST_F(OpaqueGeometry, ViewportResizesAndOffsetsKeepTheDepthMixingExact)
     r.camera()->setViewport(0, 0, 64, 64);
 }
 
+TEST_F(OpaqueGeometry, MeshPartlyInsideAndPartlyOutsideTheBox)
+{
+    // A square at z = 4, 28 units wide, sticks out of the 16-unit box on both sides: inside the
+    // box's footprint it shows through the 4 units in front of it, outside it is untouched.
+    osg::ref_ptr<VolumeScene> scene = sceneWith(flatSquare({0, 0, 4.0f}, 14.0f, osg::Vec4(1, 1, 1, 1)).get());
+    const Pixels img = renderOrthoFromPlusZ(scene.get(), 40, 40, 40.0);  // 1 unit per pixel
+    for (int x = 7; x < 33; ++x) {
+        const double centre = x + 0.5 - 20.0;
+        const double expected = std::abs(centre) < 8.0 ? transmittance(4.0) : 1.0;
+        EXPECT_NEAR(img.at(x, 20).g(), expected, 2e-4) << "x " << centre;
+        EXPECT_NEAR(img.at(x, 20).a(), 1.0, 1e-6);
+    }
+}
+
 TEST_F(OpaqueGeometry, SquareBehindIsAttenuatedByTheWholeBoxAndInFrontNotAtAll)
 {
     osg::ref_ptr<VolumeScene> behind = sceneWith(flatSquare({0, 0, -12.0f}, 4.0f, osg::Vec4(1, 0.5f, 0.25f, 1)).get());
