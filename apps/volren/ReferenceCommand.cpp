@@ -7,8 +7,6 @@
 #include <volume_renderer/OffscreenRenderer.h>
 
 #include <osg/Camera>
-#include <osg/LightSource>
-#include <osg/NodeVisitor>
 
 #include <chrono>
 #include <iostream>
@@ -32,16 +30,11 @@ int referenceCommand(const std::vector<std::string>& args)
     const auto start = std::chrono::steady_clock::now();
     const ReferenceScene content = ReferenceScene::collect(*scene);
     if (content.volumes.empty()) throw std::runtime_error(inputName(options) + ": the scene shows no volume");
-    struct Lights : osg::NodeVisitor
-    {
-        Lights() : osg::NodeVisitor(TRAVERSE_ALL_CHILDREN) {}
-        int count = 0;
-        void apply(osg::LightSource& light) override { ++count, traverse(light); }
-    } lights;
-    scene->accept(lights);
-    if (scene->get("lighting") == "on" && lights.count > 0)
-        std::cerr << "volren: note: the reference renders emission and absorption only (no lights yet); compare it "
-                     "with 'volren render ... --set lighting=off'" << std::endl;
+    // The pass settings the reference follows: lighting on/off, and slots forced null for all.
+    reference.lighting = scene->lighting;
+    for (const auto& placed : content.volumes)
+        for (const std::string& slot : scene->forceNull)
+            const_cast<VolumeNode&>(static_cast<const VolumeNode&>(*placed.node)).settings.forceNull.insert(slot);
     // Opaque geometry is rasterised once for the same camera, with every volume hidden: the rays
     // end at its depth and the volumes are composited over its colour.
     {

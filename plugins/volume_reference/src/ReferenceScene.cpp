@@ -1,5 +1,6 @@
 #include <volume_reference/ReferenceScene.h>
 
+#include <osg/LightSource>
 #include <osg/NodeVisitor>
 #include <osg/Transform>
 
@@ -19,6 +20,8 @@ ReferenceScene ReferenceScene::collect(const osg::Node& root)
                     scene.volumes.push_back({v, toWorld});
             } else if (auto* c = dynamic_cast<ClipNode*>(&node)) {
                 scene.clips.push_back({c, toWorld});
+            } else if (auto* l = dynamic_cast<osg::LightSource*>(&node); l && l->getLight()) {
+                scene.lights.push_back({l, l->getReferenceFrame() == osg::LightSource::ABSOLUTE_RF ? osg::Matrixd() : toWorld});
             }
             traverse(node);
         }

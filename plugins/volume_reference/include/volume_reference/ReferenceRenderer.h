@@ -31,6 +31,13 @@ struct ReferenceOptions
     std::vector<float> geometryDepth;
     std::vector<float> geometryColour;
     unsigned int threads = 0;               ///< 0: one per hardware thread
+    /// Shade with the scene's lights (off: emission is the TF colour, as VolumeScene's
+    /// `lighting=off`). Like the renderer, the first 8 lights count.
+    bool lighting = true;
+    /// The normals of lit samples: the exact gradient of the trilinear field (the truth; it
+    /// jumps across voxel faces), or the trilinear interpolation of the grid's central
+    /// differences (clamped at the edges), the usual smooth convention.
+    enum class Gradient { Exact, CentralDifferences } gradient = Gradient::Exact;
 };
 
 /// The result: RGBA in double precision, row 0 at the bottom, colour premultiplied and composited
@@ -47,6 +54,11 @@ struct ReferenceImage
 /// Renders the emission-absorption integral of `scene`'s volumes (several volumes, overlapping or
 /// not, add their media: extinction and emission sum) seen by `camera`. Rays run from the near
 /// plane to the far plane, so a camera inside a volume sees what is in front of it.
+/// With lights, each sample's emission is its TF colour lit as the node's settings say (Shading
+/// null, lighting or lighting_threshold; Illumination null, lambert, blinn_phong or
+/// cook_torrance; ambient, specular, shininess, roughness), the normal from
+/// ReferenceOptions::gradient (facing the viewer; the view direction where the gradient is
+/// zero), and no shadows. Other choices throw std::invalid_argument.
 ReferenceImage renderReference(const ReferenceScene& scene, const ReferenceCamera& camera,
                                const ReferenceOptions& options = {});
 

@@ -20,8 +20,12 @@ struct ReferenceScene
     };
     std::vector<Placed> volumes;  ///< VolumeNodes with a volume and a transfer function
     std::vector<Placed> clips;    ///< ClipNodes
+    /// osg::LightSources with a light; ABSOLUTE_RF ones keep eye coordinates (localToWorld is
+    /// then the identity and the camera places them).
+    std::vector<Placed> lights;
 
-    /// Collects the volumes and clip shapes below `root` (all children, whatever their masks).
+    /// Collects the volumes, clip shapes and lights below `root` (all children, whatever their
+    /// masks).
     static ReferenceScene collect(const osg::Node& root);
 };
 
