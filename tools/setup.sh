@@ -20,6 +20,8 @@ packages=(
 
 # The fuzzers (tests/fuzz, optional) need clang and its libFuzzer runtime: VOLREN_SETUP_FUZZ=1.
 [ "${VOLREN_SETUP_FUZZ:-0}" = 1 ] && packages+=(clang libclang-rt-14-dev)
+# volren bench's plot and its VTK peer (tools/bench.sh): VOLREN_SETUP_BENCH=1.
+[ "${VOLREN_SETUP_BENCH:-0}" = 1 ] && packages+=(gnuplot-nox python3-vtk9 fonts-dejavu-core)
 
 missing=()
 for p in "${packages[@]}"; do

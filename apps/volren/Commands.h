@@ -24,6 +24,8 @@ osg::ref_ptr<Volume> readVolumeWithProgress(const std::string& path);
 int viewCommand(const std::vector<std::string>& args);
 /// `volren shader [INPUT] [--set ...]`: prints each volume's composed ray caster and key.
 int shaderCommand(const std::vector<std::string>& args);
+/// `volren bench [INPUT ...] [...]`: the speed-against-accuracy matrix (apps/volren/BenchCommand.cpp).
+int benchCommand(const std::vector<std::string>& args);
 /// `volren permutations [--list] [--compile] [--render] ...`: the composition sweep.
 int permutationsCommand(const std::vector<std::string>& args);
 

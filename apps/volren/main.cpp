@@ -23,6 +23,8 @@ const char* const usage =
     "                                (OUT.osgt/.osgb/.osgx: the volume's default scene)\n"
     "  volren view [INPUT] [options]   interactive window (needs a display)\n"
     "  volren shader [INPUT] [--set KEY=VALUE ...]   print each volume's composed ray caster\n"
+    "  volren bench [INPUT ...] [--size WxH[,WxH...]] [--frames N] [--out DIR] [--configs 'A;B'] [--vtk]\n"
+    "                [--tolerance T] [--normals central|exact]   speed against accuracy: table, CSV, JSON, plot\n"
     "  volren permutations [--list] [--compile | --render] [--pairwise] [--max-instances N]\n"
     "                [--max-lights N] [--shard I/N] [--first I] [--count N] [--stats FILE.json]\n"
     "  volren render --help-settings   every --set KEY with its default, every implementation\n";
@@ -53,6 +55,7 @@ int main(int argc, char** argv)
         if (command == "info") return volren::app::infoCommand(args);
         if (command == "convert") return volren::app::convertCommand(args);
         if (command == "view") return volren::app::viewCommand(args);
+        if (command == "bench") return volren::app::benchCommand(args);
         if (command == "-h" || command == "--help" || command == "help") {
             std::cout << usage;
             return 0;

@@ -288,4 +288,14 @@ std::size_t ScreenPasses::textureCount() const
     return _captures.size() + _entries.size();
 }
 
+std::size_t ScreenPasses::textureBytes() const
+{
+    std::size_t bytes = 0;
+    for (const auto& [camera, c] : _captures)
+        bytes += std::size_t(c.texture->getTextureWidth()) * std::size_t(c.texture->getTextureHeight()) * 4;
+    for (const auto& [key, e] : _entries)
+        bytes += std::size_t(e.texture->getTextureWidth()) * std::size_t(e.texture->getTextureHeight()) * 16;
+    return bytes;
+}
+
 }  // namespace volren

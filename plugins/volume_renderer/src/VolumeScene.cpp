@@ -361,6 +361,17 @@ std::size_t VolumeScene::auxiliaryTextureCount() const
     return _volumeTextures.size() + _tables.size() + _screen.textureCount();
 }
 
+std::size_t VolumeScene::textureBytes() const
+{
+    std::lock_guard<std::mutex> lock(_mutex);
+    std::size_t bytes = _screen.textureBytes();
+    for (const auto& [key, gl] : _volumeTextures)
+        if (const osg::Image* image = gl.texture->getImage()) bytes += image->getTotalSizeInBytes();
+    for (const auto& [key, gl] : _tables)
+        if (const osg::Image* image = gl.texture->getImage()) bytes += image->getTotalSizeInBytes();
+    return bytes;
+}
+
 osg::Texture* VolumeScene::volumeTexture(const Volume& volume, bool nearest)
 {
     VolumeGL& gl = _volumeTextures[{&volume, nearest}];

@@ -37,6 +37,8 @@ public:
     void endCull(unsigned int cullCount);
     /// Screen-sized textures currently held (for tests of "only what is used").
     std::size_t textureCount() const;
+    /// Bytes of GL storage those textures take (depth 4 per pixel, entry points 16).
+    std::size_t textureBytes() const;
 
 private:
     struct Capture;

@@ -86,6 +86,9 @@ public:
     void checkPrograms(osg::State& state) const;
     /// Auxiliary textures currently held (volumes, tables): for tests of "only what is used".
     std::size_t auxiliaryTextureCount() const;
+    /// Bytes of GL texture storage this scene holds (volumes, tables, screen textures): what the
+    /// renderer allocates on the GPU besides the framebuffer.
+    std::size_t textureBytes() const;
 
 protected:
     ~VolumeScene() override;
