@@ -16,6 +16,7 @@ packages=(
   libegl-dev libegl-mesa0 libgl-dev libgl1-mesa-dri libgbm1
   mricron-data
   xvfb xauth netpbm
+  libimgui-dev
 )
 
 # The fuzzers (tests/fuzz, optional) need clang and its libFuzzer runtime: VOLREN_SETUP_FUZZ=1.

@@ -78,6 +78,7 @@ RenderOptions parseRenderOptions(const std::vector<std::string>& args, bool requ
             o.settings.emplace_back(kv.substr(0, eq), kv.substr(eq + 1));
         } else if (a == "--frames") o.frames = parseInt(value(i), "--frames", 1, 100000);
         else if (a == "--samples") o.samples = parseInt(value(i), "--samples", 1, 64);
+        else if (a == "--screenshot") o.screenshot = value(i);
         else if (a == "--stats") o.statsFile = value(i);
         else if (!a.empty() && a[0] == '-') throw UsageError("unknown option '" + a + "'");
         else if (o.input.empty()) o.input = a;

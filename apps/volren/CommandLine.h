@@ -30,6 +30,7 @@ struct RenderOptions
     std::vector<std::pair<std::string, std::string>> settings;  ///< --set KEY=VALUE
     int frames = 1;                         ///< --frames N
     int samples = 1;                        ///< --samples N: multisampled framebuffer (MSAA)
+    std::string screenshot;                 ///< view: --screenshot FILE after --frames N, then exit
     std::string statsFile;                  ///< --stats FILE.json
 };
 

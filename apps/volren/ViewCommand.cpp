@@ -1,10 +1,17 @@
 #include "Commands.h"
+#include "ImageWriter.h"
 #include "SceneSetup.h"
 
+#include <volume_gui/ImGuiOverlay.h>
+#include <volume_gui/RenderSettingsPanel.h>
+#include <volume_gui/TransferFunctionEditor.h>
+#include <volume_renderer/ShaderFunctionRegistry.h>
 #include <volume_renderer/VolumeScene.h>
 
-#include <osgGA/TrackballManipulator>
+#include <imgui.h>
 #include <osg/DisplaySettings>
+#include <osg/NodeVisitor>
+#include <osgGA/TrackballManipulator>
 #include <osgViewer/Viewer>
 #include <osgViewer/ViewerEventHandlers>
 
@@ -12,6 +19,95 @@
 #include <iostream>
 
 namespace volren::app {
+
+namespace {
+
+VolumeNode* firstVolumeNode(osg::Node& root)
+{
+    struct Finder : osg::NodeVisitor
+    {
+        Finder() : osg::NodeVisitor(TRAVERSE_ALL_CHILDREN) {}
+        VolumeNode* found = nullptr;
+        void apply(osg::Node& node) override
+        {
+            if (!found) found = dynamic_cast<VolumeNode*>(&node);
+            traverse(node);
+        }
+    } finder;
+    root.accept(finder);
+    return finder.found;
+}
+
+/// 'e' shows and hides the editor (keys ImGui took for a text field do not count).
+class EditorToggle : public osgGA::GUIEventHandler
+{
+public:
+    explicit EditorToggle(osg::Node* editor) : _editor(editor) {}
+    bool handle(const osgGA::GUIEventAdapter& ea, osgGA::GUIActionAdapter&) override
+    {
+        if (ea.getHandled() || ea.getEventType() != osgGA::GUIEventAdapter::KEYDOWN || ea.getKey() != 'e') return false;
+        _editor->setNodeMask(_editor->getNodeMask() ? 0u : ~0u);
+        return true;
+    }
+
+private:
+    osg::ref_ptr<osg::Node> _editor;
+};
+
+/// Interaction quality: while the camera moves or a TF point is dragged (any mouse button held,
+/// or the wheel turned), the volume is sampled at half its rate (not below 0.5 samples per
+/// voxel); 0.3 s after the last such event the full rate returns.
+class InteractionQuality : public osgGA::GUIEventHandler
+{
+public:
+    explicit InteractionQuality(VolumeNode* node) : _node(node) {}
+    bool handle(const osgGA::GUIEventAdapter& ea, osgGA::GUIActionAdapter&) override
+    {
+        using E = osgGA::GUIEventAdapter;
+        const auto type = ea.getEventType();
+        double& factor = _node->settings.sampleDistanceFactor;
+        if (type == E::PUSH || type == E::DRAG || type == E::SCROLL) {
+            _last = ea.getTime();
+            if (!_lowered) {
+                _full = factor;
+                factor = _reduced = std::min(2.0, 2.0 * _full);
+                _lowered = true;
+            }
+        } else if (type == E::FRAME && _lowered && ea.getTime() - _last > 0.3) {
+            if (factor == _reduced) factor = _full;  // unless someone set another rate meanwhile
+            _lowered = false;
+        }
+        return false;
+    }
+
+private:
+    osg::ref_ptr<VolumeNode> _node;
+    bool _lowered = false;
+    double _full = 0.5, _reduced = 1.0, _last = 0.0;
+};
+
+/// OSG's trackball, leaving alone the events the editor took.
+class Trackball : public osgGA::TrackballManipulator
+{
+public:
+    bool handle(const osgGA::GUIEventAdapter& ea, osgGA::GUIActionAdapter& aa) override
+    {
+        return !ea.getHandled() && osgGA::TrackballManipulator::handle(ea, aa);
+    }
+};
+
+/// Reads the window back after the last frame of a --screenshot run.
+struct Grab : osg::Camera::DrawCallback
+{
+    mutable osg::ref_ptr<osg::Image> image = new osg::Image;
+    void operator()(osg::RenderInfo& info) const override
+    {
+        const osg::Viewport* vp = info.getState()->getCurrentViewport();
+        image->readPixels(int(vp->x()), int(vp->y()), int(vp->width()), int(vp->height()), GL_RGBA, GL_FLOAT);
+    }
+};
+
+}  // namespace
 
 int viewCommand(const std::vector<std::string>& args)
 {
@@ -26,7 +122,36 @@ int viewCommand(const std::vector<std::string>& args)
     viewer.setThreadingModel(osgViewer::ViewerBase::SingleThreaded);
     viewer.setUpViewInWindow(50, 50, options.width, options.height);
     viewer.setSceneData(root.get());
-    viewer.setCameraManipulator(new osgGA::TrackballManipulator);
+
+    // The transfer-function editor of the first volume, drawn over the scene.
+    VolumeNode* node = firstVolumeNode(*root);
+    std::unique_ptr<TransferFunctionEditor> editor;
+    std::unique_ptr<RenderSettingsPanel> panel;
+    osg::ref_ptr<ImGuiOverlay> overlay;
+    if (node && node->getTransferFunction()) {
+        editor = std::make_unique<TransferFunctionEditor>(const_cast<TransferFunction*>(node->getTransferFunction()),
+                                                          node->getVolume());
+        std::map<std::string, std::vector<std::string>> choices;
+        for (const char* slot : {"RayTraversal", "Reconstruction", "Gradient", "Illumination"})
+            choices[slot] = ShaderFunctionRegistry::instance().names(slot);
+        panel = std::make_unique<RenderSettingsPanel>(node, choices);
+        overlay = new ImGuiOverlay([&editor, &panel] {
+            ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
+            editor->draw();
+            ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x - 410, 10), ImGuiCond_FirstUseEver);
+            panel->draw();
+            ImGui::SetNextWindowPos(ImVec2(10, ImGui::GetIO().DisplaySize.y - 40), ImGuiCond_Always);
+            ImGui::Begin("frame", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize);
+            ImGui::Text("%.1f ms/frame   e: editor  c: screenshot  s: stats  Esc: quit",
+                        1000.0f / std::max(ImGui::GetIO().Framerate, 1e-3f));
+            ImGui::End();
+        });
+        root->addChild(overlay->node());
+        viewer.addEventHandler(overlay->eventHandler());
+        viewer.addEventHandler(new EditorToggle(overlay->node()));
+        viewer.addEventHandler(new InteractionQuality(node));
+    }
+    viewer.setCameraManipulator(new Trackball);
     viewer.addEventHandler(new osgViewer::StatsHandler);          // 's': frame time
     viewer.addEventHandler(new osgViewer::ScreenCaptureHandler);  // 'c': screenshot
     viewer.getCamera()->setClearColor(osg::Vec4(options.background, 1.0f));
@@ -34,7 +159,20 @@ int viewCommand(const std::vector<std::string>& args)
     if (!viewer.isRealized()) throw std::runtime_error("volren view: cannot open a window on display " + std::string(display));
     // OSG's default state (fixed-function matrices and vertex arrays), as in any OSG viewer: the
     // volume proxies feed their own matrix, and polygon models keep their normals and colours.
-    std::cout << "volren view: 's' shows frame times, 'c' saves a screenshot, Esc quits" << std::endl;
+    if (!options.screenshot.empty()) {  // headless documentation: N frames, the window to a file
+        setUpCamera(*viewer.getCamera(), *root, options, double(options.width) / options.height);
+        viewer.setCameraManipulator(nullptr);
+        osg::ref_ptr<Grab> grab = new Grab;
+        for (int i = 0; i < std::max(options.frames, 3); ++i) {
+            if (i + 1 == std::max(options.frames, 3)) viewer.getCamera()->setFinalDrawCallback(grab.get());
+            viewer.frame();
+        }
+        writeImage(*grab->image, options.screenshot);
+        std::cout << "volren view: wrote " << options.screenshot << std::endl;
+        return 0;
+    }
+    std::cout << "volren view: drag to turn, e: transfer-function editor, s: frame times, c: screenshot, Esc quits"
+              << std::endl;
     return viewer.run();
 }
 

@@ -1,0 +1,33 @@
+#pragma once
+#include <volume_model/VolumeNode.h>
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace volren {
+
+/// The settings of one VolumeNode as an ImGui window ("Volume settings"): traversal,
+/// reconstruction, gradient and illumination (from the implementation names the caller offers,
+/// e.g. the renderer's registry), sample rate, early termination, and clipping on or off. Every
+/// change goes through RenderSettings::set, so it is validated like `--set`; the renderer picks
+/// it up in the next frame.
+class RenderSettingsPanel
+{
+public:
+    /// `choices`: slot ("RayTraversal", "Reconstruction", "Gradient", "Illumination") -> names.
+    RenderSettingsPanel(VolumeNode* node, std::map<std::string, std::vector<std::string>> choices);
+    /// Draws the window into the current ImGui frame and applies this frame's changes.
+    void draw();
+    /// The last rejected change (empty when all were accepted).
+    const std::string& error() const { return _error; }
+
+private:
+    void apply(const std::string& key, const std::string& value);
+
+    osg::ref_ptr<VolumeNode> _node;
+    std::map<std::string, std::vector<std::string>> _choices;
+    std::string _error;
+};
+
+}  // namespace volren

@@ -1,0 +1,65 @@
+#include <volume_gui/RenderSettingsPanel.h>
+
+#include <imgui.h>
+
+#include <sstream>
+
+namespace volren {
+
+RenderSettingsPanel::RenderSettingsPanel(VolumeNode* node, std::map<std::string, std::vector<std::string>> choices)
+    : _node(node), _choices(std::move(choices))
+{
+}
+
+void RenderSettingsPanel::apply(const std::string& key, const std::string& value)
+{
+    std::string error;
+    if (!_node->settings.set(key, value, error)) _error = key + ": " + error;
+    else _error.clear();
+}
+
+void RenderSettingsPanel::draw()
+{
+    ImGui::SetNextWindowSize(ImVec2(400, 220), ImGuiCond_FirstUseEver);
+    ImGui::Begin("Volume settings");
+    const std::pair<const char*, const char*> slots[] = {{"traversal", "RayTraversal"},
+                                                         {"reconstruction", "Reconstruction"},
+                                                         {"gradient", "Gradient"},
+                                                         {"illumination", "Illumination"}};
+    for (const auto& [key, slot] : slots) {
+        const std::string current = _node->settings.get(key);
+        if (ImGui::BeginCombo(key, current.empty() ? "(scene decides)" : current.c_str())) {
+            if (ImGui::Selectable("(scene decides)", current.empty())) _node->settings.functions.erase(slot);
+            for (const std::string& name : _choices[slot])
+                if (ImGui::Selectable(name.c_str(), name == current)) apply(key, name);
+            ImGui::EndCombo();
+        }
+    }
+    float rate = float(1.0 / _node->settings.sampleDistanceFactor);
+    if (ImGui::SliderFloat("samples per voxel", &rate, 0.25f, 16.0f, "%.2f", ImGuiSliderFlags_Logarithmic)) {
+        std::ostringstream v;
+        v << rate;
+        apply("samplerate", v.str());
+    }
+    float stop = float(_node->settings.earlyTerminationThreshold);
+    if (ImGui::SliderFloat("early termination", &stop, 0.5f, 1.0f, "%.3f")) {
+        std::ostringstream v;
+        v << stop;
+        apply("earlyTermination", v.str());
+    }
+    bool clipping = !_node->settings.forceNull.count("ClipPosition");
+    if (ImGui::Checkbox("clipping", &clipping)) {
+        std::set<std::string> nulls = _node->settings.forceNull;
+        for (const char* slot : {"ClipPosition", "ClipRay"}) {
+            if (clipping) nulls.erase(slot);
+            else nulls.insert(slot);
+        }
+        std::string list;
+        for (const std::string& s : nulls) list += (list.empty() ? "" : ",") + s;
+        apply("forceNull", list);
+    }
+    if (!_error.empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", _error.c_str());
+    ImGui::End();
+}
+
+}  // namespace volren
