@@ -176,6 +176,7 @@ TestScene makeScene(const std::string& dir)
     osg::ref_ptr<TransferFunction> windowed = rampTransferFunction();
     windowed->setDomain(-0.1, 250.75);
     windowed->setResolution(333);
+    windowed->setInterpolation(TransferFunction::Interpolation::MonotoneCubic);
     osg::ref_ptr<VolumeNode> c = new VolumeNode;
     c->setName("c");
     c->setVolume(s.memoryVolume.get());
@@ -229,6 +230,7 @@ void expectSameTransferFunction(const TransferFunction& a, const TransferFunctio
     EXPECT_EQ(a.domainMin(), b.domainMin());
     EXPECT_EQ(a.domainMax(), b.domainMax());
     EXPECT_EQ(a.resolution(), b.resolution());
+    EXPECT_EQ(a.interpolation(), b.interpolation());
 }
 
 /// Same classes, node fields and volren fields all the way down (volume files compared as files).

@@ -109,6 +109,21 @@ TEST(TransferFunctionFile, DomainAndResolutionSurviveASaveAndLoad)
     EXPECT_EQ(back->domainMin(), -24.5);
     EXPECT_EQ(back->domainMax(), 4095.0);
     EXPECT_EQ(back->resolution(), 4096u);
+    EXPECT_EQ(back->interpolation(), TransferFunction::Interpolation::Linear);
+
+    // Smooth curves survive too, as a '#volren interpolation' line.
+    tf.setInterpolation(TransferFunction::Interpolation::MonotoneCubic);
+    writeTransferFunctionFile(tf, dir + "/smooth.tf");
+    back = readTransferFunctionFile(dir + "/smooth.tf");
+    EXPECT_EQ(back->interpolation(), TransferFunction::Interpolation::MonotoneCubic);
+    EXPECT_EQ(back->evaluate(300.0), tf.evaluate(300.0));
+    writeFile(dir, "bad.tf", "#volren interpolation cosine\n0 0 0 0 0\n255 255 255 255 255\n");
+    try {
+        readTransferFunctionFile(dir + "/bad.tf");
+        ADD_FAILURE() << "an unknown interpolation must be an error";
+    } catch (const std::exception& e) {
+        EXPECT_NE(std::string(e.what()).find("bad.tf:1"), std::string::npos) << e.what();
+    }
 }
 
 TEST(TransferFunctionFile, StockOsgReaderAndVolrenReaderAgree)

@@ -155,6 +155,12 @@ void TransferFunctionEditor::drawToolbar()
     ImGui::Checkbox("log histogram", &logHistogram);
     ImGui::SameLine();
     ImGui::Checkbox("log opacity", &logOpacity);
+    ImGui::SameLine();
+    bool smooth = _tf->interpolation() == TransferFunction::Interpolation::MonotoneCubic;
+    if (ImGui::Checkbox("smooth", &smooth)) {
+        _tf->setInterpolation(smooth ? TransferFunction::Interpolation::MonotoneCubic : TransferFunction::Interpolation::Linear);
+        _history.record();
+    }
 
     ImGui::BeginDisabled(!_history.canUndo());
     if (ImGui::Button("Undo")) _history.undo();

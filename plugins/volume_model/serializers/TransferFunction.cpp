@@ -93,6 +93,25 @@ bool readResolution(osgDB::InputStream& is, TransferFunction& tf)
     return true;
 }
 
+bool checkInterpolation(const TransferFunction&) { return true; }
+
+bool writeInterpolation(osgDB::OutputStream& os, const TransferFunction& tf)
+{
+    os << std::string(tf.interpolation() == TransferFunction::Interpolation::MonotoneCubic ? "MonotoneCubic" : "Linear")
+       << std::endl;
+    return true;
+}
+
+bool readInterpolation(osgDB::InputStream& is, TransferFunction& tf)
+{
+    std::string mode;
+    is >> mode;
+    if (mode == "Linear") tf.setInterpolation(TransferFunction::Interpolation::Linear);
+    else if (mode == "MonotoneCubic") tf.setInterpolation(TransferFunction::Interpolation::MonotoneCubic);
+    else return fail(is, "volren::TransferFunction Interpolation: '" + mode + "' is not Linear or MonotoneCubic"), false;
+    return true;
+}
+
 }  // namespace
 
 REGISTER_OBJECT_WRAPPER(volren_TransferFunction, new volren::TransferFunction, volren::TransferFunction,
@@ -101,4 +120,5 @@ REGISTER_OBJECT_WRAPPER(volren_TransferFunction, new volren::TransferFunction, v
     ADD_USER_SERIALIZER(Points);
     ADD_USER_SERIALIZER(Domain);
     ADD_USER_SERIALIZER(Resolution);
+    ADD_USER_SERIALIZER(Interpolation);  // newer than the other fields: an older .osgb lacks it
 }

@@ -1,5 +1,6 @@
 #include <volume_model/TransferFunction.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -14,7 +15,8 @@ TransferFunction::TransferFunction(const TransferFunction& other, const osg::Cop
       _hasDomain(other._hasDomain),
       _domainMin(other._domainMin),
       _domainMax(other._domainMax),
-      _resolution(other._resolution)
+      _resolution(other._resolution),
+      _interpolation(other._interpolation)
 {
 }
 
@@ -43,6 +45,14 @@ void TransferFunction::assign(const TransferFunction& other)
     _domainMin = other._domainMin;
     _domainMax = other._domainMax;
     _resolution = other._resolution;
+    _interpolation = other._interpolation;
+    ++_modifiedCount;
+}
+
+void TransferFunction::setInterpolation(Interpolation mode)
+{
+    if (mode == _interpolation) return;
+    _interpolation = mode;
     ++_modifiedCount;
 }
 
@@ -115,8 +125,45 @@ osg::Vec4 TransferFunction::evaluate(double value) const
     if (upper == _points.end()) return _points.rbegin()->second;
     if (upper->first == value) return upper->second;
     auto lower = std::prev(upper);
-    const double t = (value - lower->first) / (upper->first - lower->first);
-    return lower->second * float(1.0 - t) + upper->second * float(t);
+    const double h = upper->first - lower->first;
+    const double t = (value - lower->first) / h;
+    if (_interpolation == Interpolation::Linear) return lower->second * float(1.0 - t) + upper->second * float(t);
+
+    // Monotone cubic Hermite (Fritsch-Carlson), per channel: tangents are the mean of the
+    // neighbouring secants, zero at a local extremum or a flat segment, and limited so that the
+    // curve stays between its points (no overshoot, so components stay in [0, 1]).
+    const auto before = lower == _points.begin() ? _points.end() : std::prev(lower);
+    const auto after = std::next(upper);
+    const double h00 = (1.0 + 2.0 * t) * (1.0 - t) * (1.0 - t), h10 = t * (1.0 - t) * (1.0 - t);
+    const double h01 = t * t * (3.0 - 2.0 * t), h11 = t * t * (t - 1.0);
+    osg::Vec4 out;
+    for (int c = 0; c < 4; ++c) {
+        const double y0 = lower->second[c], y1 = upper->second[c];
+        const double d = (y1 - y0) / h;
+        auto tangent = [&](double neighbourSecant, bool exists) {
+            if (!exists) return d;  // an end point: the segment's own secant
+            return neighbourSecant * d > 0.0 ? 0.5 * (neighbourSecant + d) : 0.0;
+        };
+        double m0 = tangent(before != _points.end() ? (y0 - before->second[c]) / (lower->first - before->first) : 0.0,
+                            before != _points.end());
+        double m1 = tangent(after != _points.end() ? (after->second[c] - y1) / (after->first - upper->first) : 0.0,
+                            after != _points.end());
+        if (d == 0.0) {
+            m0 = m1 = 0.0;
+        } else {
+            const double a = m0 / d, b = m1 / d;
+            if (a < 0.0) m0 = 0.0;
+            if (b < 0.0) m1 = 0.0;
+            const double r = a * a + b * b;
+            if (r > 9.0) {
+                const double tau = 3.0 / std::sqrt(r);
+                m0 = tau * a * d;
+                m1 = tau * b * d;
+            }
+        }
+        out[c] = float(std::clamp(h00 * y0 + h10 * h * m0 + h01 * y1 + h11 * h * m1, 0.0, 1.0));
+    }
+    return out;
 }
 
 std::vector<osg::Vec4> TransferFunction::lookupTable() const

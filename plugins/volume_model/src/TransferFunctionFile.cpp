@@ -60,6 +60,7 @@ osg::ref_ptr<TransferFunction> readTfFile(const std::string& path)
     bool hasDomain = false;
     double domain[2] = {0.0, 1.0};
     unsigned int resolution = 0;
+    bool smooth = false;
     while (std::getline(in, line)) {
         ++lineNo;
         std::istringstream words(line);
@@ -77,8 +78,14 @@ osg::ref_ptr<TransferFunction> readTfFile(const std::string& path)
                 const double n = number(words, "#volren resolution");
                 if (n < 2 || n > 65536 || n != double(unsigned(n))) fail("#volren resolution must be an integer in 2..65536");
                 resolution = unsigned(n);
+            } else if (key == "interpolation") {
+                std::string mode;
+                words >> mode;
+                if (mode != "linear" && mode != "monotone-cubic")
+                    fail("#volren interpolation must be linear or monotone-cubic, got '" + mode + "'");
+                smooth = mode == "monotone-cubic";
             } else {
-                fail("unknown '#volren " + key + "' (known: domain, resolution)");
+                fail("unknown '#volren " + key + "' (known: domain, resolution, interpolation)");
             }
             continue;
         }
@@ -117,6 +124,7 @@ osg::ref_ptr<TransferFunction> readTfFile(const std::string& path)
     }
     if (hasDomain) tf->setDomain(domain[0], domain[1]);
     if (resolution) tf->setResolution(resolution);
+    if (smooth) tf->setInterpolation(TransferFunction::Interpolation::MonotoneCubic);
     return tf;
 }
 
@@ -135,6 +143,7 @@ void writeTransferFunctionFile(const TransferFunction& tf, const std::string& pa
         out << std::setprecision(std::numeric_limits<double>::max_digits10);
         if (tf.hasExplicitDomain()) out << "#volren domain " << tf.domainMin() << ' ' << tf.domainMax() << '\n';
         out << "#volren resolution " << tf.resolution() << '\n';
+        if (tf.interpolation() == TransferFunction::Interpolation::MonotoneCubic) out << "#volren interpolation monotone-cubic\n";
         out << "colour-scale 1\n";
         for (const auto& [value, c] : tf.points())
             out << value << ' ' << c.r() << ' ' << c.g() << ' ' << c.b() << ' ' << c.a() << '\n';

@@ -7,7 +7,7 @@
 
 namespace volren {
 
-/// Maps data values to RGBA through piecewise-linear control points.
+/// Maps data values to RGBA through control points, piecewise linear or smooth (monotone cubic).
 /// Colour is unassociated emission; alpha is the opacity of a segment as long as the
 /// smallest voxel spacing of the volume it classifies (see DESIGN.md conventions).
 class TransferFunction : public osg::Object
@@ -23,7 +23,8 @@ public:
     void setPoint(double value, const osg::Vec4& rgba);
     /// Removes the control point at exactly `value`; returns false when there is none.
     bool removePoint(double value);
-    /// Takes over points, domain and resolution of `other` (an edit: bumps the modified count).
+    /// Takes over points, domain, resolution and interpolation of `other` (an edit: bumps the
+    /// modified count).
     void assign(const TransferFunction& other);
     /// Removes every control point.
     void clearPoints();
@@ -47,7 +48,16 @@ public:
     void setResolution(unsigned int entries);
     unsigned int resolution() const { return _resolution; }  ///< lookup-table entries
 
-    /// RGBA at data value `value`: linear between points, the end points' colour outside.
+    /// How channels run between control points.
+    enum class Interpolation
+    {
+        Linear,         ///< straight segments (the default; OSG's `.tf` meaning)
+        MonotoneCubic,  ///< smooth (C1) curves that never overshoot their points (Fritsch-Carlson)
+    };
+    void setInterpolation(Interpolation mode);
+    Interpolation interpolation() const { return _interpolation; }  ///< between control points
+
+    /// RGBA at data value `value`: interpolated between points, the end points' colour outside.
     osg::Vec4 evaluate(double value) const;
     /// resolution() entries; entry i is evaluate(domainMin + i/(resolution-1) * (domainMax - domainMin)).
     std::vector<osg::Vec4> lookupTable() const;
@@ -60,6 +70,7 @@ private:
     bool _hasDomain = false;
     double _domainMin = 0.0, _domainMax = 1.0;
     unsigned int _resolution = 1024;
+    Interpolation _interpolation = Interpolation::Linear;
     unsigned int _modifiedCount = 0;
 };
 
