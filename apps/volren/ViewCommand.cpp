@@ -3,6 +3,7 @@
 #include "SceneSetup.h"
 
 #include <volume_gui/ImGuiOverlay.h>
+#include <volume_gui/InteractionQuality.h>
 #include <volume_gui/RenderSettingsPanel.h>
 #include <volume_gui/TransferFunctionEditor.h>
 #include <volume_renderer/ShaderFunctionRegistry.h>
@@ -52,38 +53,6 @@ public:
 
 private:
     osg::ref_ptr<osg::Node> _editor;
-};
-
-/// Interaction quality: while the camera moves or a TF point is dragged (any mouse button held,
-/// or the wheel turned), the volume is sampled at half its rate (not below 0.5 samples per
-/// voxel); 0.3 s after the last such event the full rate returns.
-class InteractionQuality : public osgGA::GUIEventHandler
-{
-public:
-    explicit InteractionQuality(VolumeNode* node) : _node(node) {}
-    bool handle(const osgGA::GUIEventAdapter& ea, osgGA::GUIActionAdapter&) override
-    {
-        using E = osgGA::GUIEventAdapter;
-        const auto type = ea.getEventType();
-        double& factor = _node->settings.sampleDistanceFactor;
-        if (type == E::PUSH || type == E::DRAG || type == E::SCROLL) {
-            _last = ea.getTime();
-            if (!_lowered) {
-                _full = factor;
-                factor = _reduced = std::min(2.0, 2.0 * _full);
-                _lowered = true;
-            }
-        } else if (type == E::FRAME && _lowered && ea.getTime() - _last > 0.3) {
-            if (factor == _reduced) factor = _full;  // unless someone set another rate meanwhile
-            _lowered = false;
-        }
-        return false;
-    }
-
-private:
-    osg::ref_ptr<VolumeNode> _node;
-    bool _lowered = false;
-    double _full = 0.5, _reduced = 1.0, _last = 0.0;
 };
 
 /// OSG's trackball, leaving alone the events the editor took.

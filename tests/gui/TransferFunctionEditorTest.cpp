@@ -4,6 +4,7 @@
 #include "TestData.h"
 
 #include <volume_gui/ImGuiOverlay.h>
+#include <volume_gui/InteractionQuality.h>
 #include <volume_gui/TransferFunctionEditor.h>
 
 #include <volume_model/ReadVolume.h>
@@ -35,9 +36,10 @@ struct Input
 
 class Editor : public RenderFixture
 {
-protected:
+public:
     static constexpr int width = 640, height = 480;
 
+protected:
     void SetUp() override
     {
         tf = new TransferFunction;
@@ -242,6 +244,75 @@ TEST_F(Editor, ScreenshotShowsTheHistogramTheCurvesAndThePointsOverTheVolume)
     EXPECT_GT(strip, 100) << "the colour strip";
     EXPECT_GT(volumePixels, 1000) << "the head beside the editor";
     EXPECT_GT(overlay->frames(), 2u);
+}
+
+/// What a handler may ask of the viewer: nothing here.
+struct NoActions : osgGA::GUIActionAdapter
+{
+    void requestRedraw() override {}
+    void requestContinuousUpdate(bool) override {}
+    void requestWarpPointer(float, float) override {}
+};
+
+osg::ref_ptr<osgGA::GUIEventAdapter> event(osgGA::GUIEventAdapter::EventType type, double time, float x = 0, float y = 0)
+{
+    osg::ref_ptr<osgGA::GUIEventAdapter> e = new osgGA::GUIEventAdapter;
+    e->setEventType(type);
+    e->setTime(time);
+    e->setWindowRectangle(0, 0, Editor::width, Editor::height);
+    e->setInputRange(0, 0, Editor::width, Editor::height);
+    e->setX(x);
+    e->setY(y);
+    e->setButton(osgGA::GUIEventAdapter::LEFT_MOUSE_BUTTON);
+    e->setMouseYOrientation(osgGA::GUIEventAdapter::Y_INCREASING_UPWARDS);  // as osgViewer's windows send them
+    return e;
+}
+
+TEST_F(Editor, WindowEventsReachImGuiAndThoseOnTheEditorAreConsumed)
+{
+    // An osgViewer's events, y upwards, become ImGui's mouse (y downwards); over the editor the
+    // handler consumes them, so the trackball does not turn.
+    NoActions actions;
+    osgGA::GUIEventHandler& handler = *overlay->eventHandler();
+    overlay->beforeFrame = nullptr;  // the handler feeds ImGui now
+    const ImVec2 inside = pixelOf(editor->screenPosition(100.0, 0.5));
+    handler.handle(*event(osgGA::GUIEventAdapter::MOVE, 0.9, inside.x, height - inside.y), actions);
+    renderOrthoFromPlusZ(scene.get(), width, height, 40.0);  // a frame sees the mouse over the editor
+    EXPECT_TRUE(handler.handle(*event(osgGA::GUIEventAdapter::PUSH, 1.0, inside.x, height - inside.y), actions));
+    ImGui::SetCurrentContext(overlay->context());
+    EXPECT_EQ(ImGui::GetIO().MousePos.x, inside.x);
+    EXPECT_EQ(ImGui::GetIO().MousePos.y, inside.y);
+    EXPECT_TRUE(ImGui::GetIO().MouseDown[0]);
+    handler.handle(*event(osgGA::GUIEventAdapter::RELEASE, 1.1, inside.x, height - inside.y), actions);
+    EXPECT_FALSE(ImGui::GetIO().MouseDown[0]);
+    // Away from every ImGui window (after a frame has seen the mouse there): not consumed.
+    handler.handle(*event(osgGA::GUIEventAdapter::MOVE, 1.2, width - 5.0f, 5.0f), actions);
+    renderOrthoFromPlusZ(scene.get(), width, height, 40.0);
+    EXPECT_FALSE(handler.handle(*event(osgGA::GUIEventAdapter::PUSH, 1.3, width - 5.0f, 5.0f), actions));
+}
+
+TEST(InteractionQualityPolicy, HalfRateWhileInteractingFullRateWhenIdle)
+{
+    osg::ref_ptr<VolumeNode> node = RenderFixture::volumeNode(constantVolume(VoxelType::UInt8, {4, 4, 4}, 1).get(),
+                                                              constantTransferFunction(osg::Vec4(1, 1, 1, 0.1f)).get());
+    node->settings.sampleDistanceFactor = 0.5;
+    osg::ref_ptr<InteractionQuality> policy = new InteractionQuality(node.get(), 0.3);
+    NoActions actions;
+    EXPECT_FALSE(policy->handle(*event(osgGA::GUIEventAdapter::PUSH, 1.0), actions)) << "never consumes";
+    EXPECT_EQ(node->settings.sampleDistanceFactor, 1.0) << "half the samples while interacting";
+    policy->handle(*event(osgGA::GUIEventAdapter::DRAG, 1.1), actions);
+    policy->handle(*event(osgGA::GUIEventAdapter::FRAME, 1.3), actions);
+    EXPECT_EQ(node->settings.sampleDistanceFactor, 1.0) << "0.2 s after the last drag: still reduced";
+    policy->handle(*event(osgGA::GUIEventAdapter::FRAME, 1.45), actions);
+    EXPECT_EQ(node->settings.sampleDistanceFactor, 0.5) << "0.35 s after: the full rate";
+    EXPECT_FALSE(policy->lowered());
+
+    node->settings.sampleDistanceFactor = 1.5;  // coarse already: at most 2 voxels per step
+    policy->handle(*event(osgGA::GUIEventAdapter::SCROLL, 2.0), actions);
+    EXPECT_EQ(node->settings.sampleDistanceFactor, 2.0);
+    node->settings.sampleDistanceFactor = 0.25;  // the settings panel during the drag
+    policy->handle(*event(osgGA::GUIEventAdapter::FRAME, 3.0), actions);
+    EXPECT_EQ(node->settings.sampleDistanceFactor, 0.25) << "a rate set meanwhile stays";
 }
 
 }  // namespace
