@@ -14,7 +14,6 @@
 #include <volume_renderer/OffscreenRenderer.h>
 
 #include <osg/GLExtensions>
-#include <osg/NodeVisitor>
 #include <osgDB/FileNameUtils>
 
 #include <algorithm>
@@ -84,22 +83,6 @@ osg::ref_ptr<Volume> storedAs(const Volume& volume, VoxelType type)
     out->setName(volume.getName());
     out->dirty();
     return out;
-}
-
-std::vector<VolumeNode*> volumeNodes(osg::Node& root)
-{
-    struct Finder : osg::NodeVisitor
-    {
-        Finder() : osg::NodeVisitor(TRAVERSE_ALL_CHILDREN) {}
-        std::vector<VolumeNode*> nodes;
-        void apply(osg::Node& node) override
-        {
-            if (auto* v = dynamic_cast<VolumeNode*>(&node)) nodes.push_back(v);
-            traverse(node);
-        }
-    } finder;
-    root.accept(finder);
-    return finder.nodes;
 }
 
 double median(std::vector<double> v)

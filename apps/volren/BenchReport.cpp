@@ -1,11 +1,11 @@
 #include "BenchReport.h"
+#include "SceneSetup.h"
 
 #include <volume_model/ReadVolume.h>
 #include <volume_model/TransferFunction.h>
 #include <volume_model/VolumeNode.h>
 
 #include <nlohmann/json.hpp>
-#include <osg/NodeVisitor>
 #include <osgDB/FileNameUtils>
 #include <osgDB/FileUtils>
 
@@ -169,19 +169,9 @@ void writeReport(BenchReport& report, const std::string& directory)
 std::pair<BenchRow, osg::ref_ptr<osg::Image>> runVtkPeer(const VolumeScene& scene, const ReferenceCamera& camera,
                                                          int frames, const std::string& directory)
 {
-    struct Finder : osg::NodeVisitor
-    {
-        Finder() : osg::NodeVisitor(TRAVERSE_ALL_CHILDREN) {}
-        std::vector<const VolumeNode*> nodes;
-        void apply(osg::Node& node) override
-        {
-            if (auto* v = dynamic_cast<VolumeNode*>(&node)) nodes.push_back(v);
-            traverse(node);
-        }
-    } finder;
-    const_cast<VolumeScene&>(scene).accept(finder);
-    if (finder.nodes.size() != 1) throw std::runtime_error("bench --vtk: the scene must hold exactly one volume");
-    const VolumeNode& node = *finder.nodes.front();
+    const std::vector<VolumeNode*> nodes = volumeNodes(const_cast<VolumeScene&>(scene));
+    if (nodes.size() != 1) throw std::runtime_error("bench --vtk: the scene must hold exactly one volume");
+    const VolumeNode& node = *nodes.front();
     const Volume& volume = *node.getVolume();
     if (volume.sourceFile.empty()) throw std::runtime_error("bench --vtk: the volume has no file VTK could read");
 

@@ -23,8 +23,6 @@
 
 namespace volren::app {
 
-namespace {
-
 std::vector<VolumeNode*> volumeNodes(osg::Node& root)
 {
     struct Collect : osg::NodeVisitor
@@ -40,6 +38,8 @@ std::vector<VolumeNode*> volumeNodes(osg::Node& root)
     root.accept(collect);
     return collect.nodes;
 }
+
+namespace {
 
 /// Collects what OSG's scene-file parser and the volren serializers warn about while a scene is
 /// read (OSG skips unknown classes and properties; after a volren field fails, OSG may replace

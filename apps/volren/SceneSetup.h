@@ -6,6 +6,8 @@
 #include <osg/Camera>
 #include <osg/Node>
 
+#include <vector>
+
 namespace volren::app {
 
 /// INPUT as messages name it ("the default scene (scenes/default.osgt)" when there is none).
@@ -22,6 +24,8 @@ osg::ref_ptr<VolumeScene> loadScene(const RenderOptions& options);
 /// implementations.
 std::string settingsHelp();
 
+/// Every VolumeNode below `root`, in traversal order (all children, whatever their masks).
+std::vector<VolumeNode*> volumeNodes(osg::Node& root);
 /// Sets the camera's view and projection from the options, defaulting to a view that frames
 /// the scene's bound from the front-right-above (+x, +y, +z up: anterior for RAS volumes).
 void setUpCamera(osg::Camera& camera, const osg::Node& scene, const RenderOptions& options, double aspect);

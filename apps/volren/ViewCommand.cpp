@@ -11,7 +11,6 @@
 
 #include <imgui.h>
 #include <osg/DisplaySettings>
-#include <osg/NodeVisitor>
 #include <osgGA/TrackballManipulator>
 #include <osgViewer/Viewer>
 #include <osgViewer/ViewerEventHandlers>
@@ -22,22 +21,6 @@
 namespace volren::app {
 
 namespace {
-
-VolumeNode* firstVolumeNode(osg::Node& root)
-{
-    struct Finder : osg::NodeVisitor
-    {
-        Finder() : osg::NodeVisitor(TRAVERSE_ALL_CHILDREN) {}
-        VolumeNode* found = nullptr;
-        void apply(osg::Node& node) override
-        {
-            if (!found) found = dynamic_cast<VolumeNode*>(&node);
-            traverse(node);
-        }
-    } finder;
-    root.accept(finder);
-    return finder.found;
-}
 
 /// 'e' shows and hides the editor (keys ImGui took for a text field do not count).
 class EditorToggle : public osgGA::GUIEventHandler
@@ -93,7 +76,8 @@ int viewCommand(const std::vector<std::string>& args)
     viewer.setSceneData(root.get());
 
     // The transfer-function editor of the first volume, drawn over the scene.
-    VolumeNode* node = firstVolumeNode(*root);
+    const std::vector<VolumeNode*> nodes = volumeNodes(*root);
+    VolumeNode* node = nodes.empty() ? nullptr : nodes.front();
     std::unique_ptr<TransferFunctionEditor> editor;
     std::unique_ptr<RenderSettingsPanel> panel;
     osg::ref_ptr<ImGuiOverlay> overlay;

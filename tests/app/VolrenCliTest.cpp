@@ -6,12 +6,14 @@
 #include <OpenImageIO/imageio.h>
 #include <nlohmann/json.hpp>
 #include <gtest/gtest.h>
+#include <osgDB/FileUtils>
 
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <cmath>
 #include <fstream>
+#include <sstream>
 #include <sys/wait.h>
 
 namespace volren::test {
@@ -230,6 +232,36 @@ TEST(VolrenCli, SamplesDrawIntoAMultisampledFramebuffer)
         }
     EXPECT_GT(differ, 30) << "edges antialiased";
     EXPECT_GT(alike, one.width * one.height / 2) << "the rest as before";
+}
+
+TEST(VolrenCli, BenchWritesTheMatrixWithErrorsAgainstTheReference)
+{
+    // Two configurations of the default scene at 32x32: every output written, one row each, the
+    // errors measured (finite, small, lighting off against its own unlit reference).
+    VOLREN_REQUIRE_SHARED_DATA();
+    const std::string dir = tempDirectory();
+    const CliRun run = volren("bench --size 32x32 --frames 1 --configs 'default;lighting=off' --out '" + dir + "/b'");
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    for (const char* file : {"bench.md", "bench.csv", "bench.json"})
+        EXPECT_TRUE(osgDB::fileExists(dir + "/b/" + file)) << file;
+    std::ifstream csv(dir + "/b/bench.csv");
+    std::string header, line;
+    std::getline(csv, header);
+    EXPECT_EQ(header.rfind("dataset,width,height,renderer,config,truth,frame_ms", 0), 0u) << header;
+    int rows = 0;
+    while (std::getline(csv, line)) {
+        ++rows;
+        // rmse is the 12th column: after the quoted dataset, config and truth.
+        std::vector<std::string> fields;
+        std::stringstream in(line);
+        for (std::string f; std::getline(in, f, ',');) fields.push_back(f);
+        ASSERT_GE(fields.size(), 15u) << line;
+        const double rmse = std::stod(fields[11]);
+        EXPECT_GT(rmse, 0.0) << line;
+        EXPECT_LT(rmse, 0.1) << line;
+    }
+    EXPECT_EQ(rows, 2);
+    EXPECT_NE(run.output.find("reference 'unlit:'"), std::string::npos) << run.output;
 }
 
 TEST(VolrenCli, InfoPrintsGeometryAndValues)
