@@ -185,8 +185,7 @@ std::pair<BenchRow, osg::ref_ptr<osg::Image>> runVtkPeer(const VolumeScene& scen
     nlohmann::json points = nlohmann::json::array();
     for (const auto& [value, rgba] : node.getTransferFunction()->points())
         points.push_back({value, rgba.r(), rgba.g(), rgba.b(), rgba.a()});
-    const double step = node.settings.sampleDistance > 0.0 ? node.settings.sampleDistance
-                                                           : node.settings.sampleDistanceFactor * volume.minSpacing();
+    const double step = VolumeScene::effectiveSampleDistance(node);  // the step volren marches
     const nlohmann::json spec = {
         {"volume", volume.sourceFile},
         {"spacing", {volume.spacing().x(), volume.spacing().y(), volume.spacing().z()}},

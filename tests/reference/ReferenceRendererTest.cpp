@@ -197,6 +197,17 @@ class GpuAgainstReference : public RenderFixture
 {
 };
 
+/// A square perspective view of `size` pixels from `eye` to `centre`, +z up.
+ReferenceCamera perspectiveCamera(int size, const osg::Vec3d& eye, const osg::Vec3d& centre, double fovy, double zNear,
+                                  double zFar)
+{
+    ReferenceCamera c;
+    c.width = c.height = size;
+    c.view = osg::Matrixd::lookAt(eye, centre, osg::Vec3d(0, 0, 1));
+    c.projection = osg::Matrixd::perspective(fovy, 1.0, zNear, zFar);
+    return c;
+}
+
 /// A GPU image against the reference over all four channels.
 struct Difference
 {
@@ -230,13 +241,12 @@ TEST_F(GpuAgainstReference, UnlitMriHeadConvergesToTheReferenceAsTheSampleRateRi
     // at 16) is the GPU's 8-bit filtering weights and its 1024-entry TF table.
     VOLREN_REQUIRE_SHARED_DATA();
     osg::ref_ptr<Volume> head = readVolumeFile(sharedData("mri/ch2.nii.gz"));
-    osg::ref_ptr<TransferFunction> tf = new TransferFunction;
-    tf->setPoint(0, osg::Vec4(0, 0, 0, 0));
-    tf->setPoint(50, osg::Vec4(0.55f, 0.2f, 0.1f, 0));
-    tf->setPoint(95, osg::Vec4(0.85f, 0.55f, 0.35f, 0.04f));
-    tf->setPoint(140, osg::Vec4(1, 0.85f, 0.7f, 0.12f));
-    tf->setPoint(178, osg::Vec4(1, 1, 1, 0.3f));
-    tf->setDomain(0, 254);
+    osg::ref_ptr<TransferFunction> tf = transferFunction({{0, {0, 0, 0, 0}},
+                                                         {50, {0.55f, 0.2f, 0.1f, 0}},
+                                                         {95, {0.85f, 0.55f, 0.35f, 0.04f}},
+                                                         {140, {1, 0.85f, 0.7f, 0.12f}},
+                                                         {178, {1, 1, 1, 0.3f}}},
+                                                        0, 254);
     osg::ref_ptr<VolumeNode> node = volumeNode(head.get(), tf.get());
     std::string error;
     ASSERT_TRUE(node->settings.set("earlyTermination", "1", error)) << error;  // march to the end, as the integral does
@@ -245,10 +255,7 @@ TEST_F(GpuAgainstReference, UnlitMriHeadConvergesToTheReferenceAsTheSampleRateRi
     scene->addChild(node.get());
 
     const int size = 48;
-    ReferenceCamera camera;
-    camera.width = camera.height = size;
-    camera.view = osg::Matrixd::lookAt(osg::Vec3d(180, 330, 120), osg::Vec3d(0, 0, 0), osg::Vec3d(0, 0, 1));
-    camera.projection = osg::Matrixd::perspective(40, 1, 100, 800);
+    const ReferenceCamera camera = perspectiveCamera(size, osg::Vec3d(180, 330, 120), osg::Vec3d(0, 0, 0), 40, 100, 800);
     ReferenceOptions options;
     options.tolerance = 1e-4;
     const ReferenceImage truth = renderReference(ReferenceScene::collect(*scene), camera, options);
@@ -280,11 +287,8 @@ TEST_F(GpuAgainstReference, LitMriHeadMatchesTheReferenceWithTheSameGradientConv
     // measured. No jitter, no early termination, 4 samples per voxel.
     VOLREN_REQUIRE_SHARED_DATA();
     osg::ref_ptr<Volume> head = readVolumeFile(sharedData("mri/ch2.nii.gz"));
-    osg::ref_ptr<TransferFunction> tf = new TransferFunction;
-    tf->setPoint(0, osg::Vec4(0, 0, 0, 0));
-    tf->setPoint(95, osg::Vec4(0.85f, 0.55f, 0.35f, 0.04f));
-    tf->setPoint(178, osg::Vec4(1, 1, 1, 0.3f));
-    tf->setDomain(0, 254);
+    osg::ref_ptr<TransferFunction> tf =
+        transferFunction({{0, {0, 0, 0, 0}}, {95, {0.85f, 0.55f, 0.35f, 0.04f}}, {178, {1, 1, 1, 0.3f}}}, 0, 254);
     osg::ref_ptr<VolumeNode> node = volumeNode(head.get(), tf.get());
     std::string error;
     ASSERT_TRUE(node->settings.set("earlyTermination", "1", error)) << error;
@@ -296,10 +300,7 @@ TEST_F(GpuAgainstReference, LitMriHeadMatchesTheReferenceWithTheSameGradientConv
     scene->addChild(light.get());
 
     const int size = 40;
-    ReferenceCamera camera;
-    camera.width = camera.height = size;
-    camera.view = osg::Matrixd::lookAt(osg::Vec3d(180, 330, 120), osg::Vec3d(0, 0, 0), osg::Vec3d(0, 0, 1));
-    camera.projection = osg::Matrixd::perspective(40, 1, 100, 800);
+    const ReferenceCamera camera = perspectiveCamera(size, osg::Vec3d(180, 330, 120), osg::Vec3d(0, 0, 0), 40, 100, 800);
     const Pixels gpu = render(scene.get(), size, size, camera.view, camera.projection);
     ASSERT_NE(scene->compositionKeys().front().find("Illumination=blinn_phong"), std::string::npos);
     ReferenceOptions options;
@@ -331,10 +332,7 @@ TEST_F(GpuAgainstReference, DefaultSceneInItsDefaultConfigurationIsWithinTheStat
     osg::ref_ptr<osg::Node> loaded = osgDB::readRefNodeFile(std::string(VOLREN_SOURCE_DIR) + "/scenes/default.osgt");
     ASSERT_TRUE(loaded);
     const int size = 64;
-    ReferenceCamera camera;
-    camera.width = camera.height = size;
-    camera.view = osg::Matrixd::lookAt(osg::Vec3d(160, 300, 110), osg::Vec3d(0, 0, 0), osg::Vec3d(0, 0, 1));
-    camera.projection = osg::Matrixd::perspective(40, 1, 100, 700);
+    const ReferenceCamera camera = perspectiveCamera(size, osg::Vec3d(160, 300, 110), osg::Vec3d(0, 0, 0), 40, 100, 700);
     const Pixels gpu = render(loaded.get(), size, size, camera.view, camera.projection);
     ReferenceOptions options;
     options.tolerance = 1e-3;
@@ -355,16 +353,10 @@ TEST_F(GpuAgainstReference, TwoOverlappingVolumesMatchTheReferenceSumOfMedia)
     // Measured on llvmpipe: RMSE 1.5e-4, max 1.8e-3 (one volume alone: 2.9e-4 at this rate).
     VOLREN_REQUIRE_SHARED_DATA();
     osg::ref_ptr<Volume> head = readVolumeFile(sharedData("mri/ch2.nii.gz"));
-    osg::ref_ptr<TransferFunction> warm = new TransferFunction;
-    warm->setPoint(0, osg::Vec4(0, 0, 0, 0));
-    warm->setPoint(95, osg::Vec4(0.9f, 0.5f, 0.3f, 0.03f));
-    warm->setPoint(178, osg::Vec4(1, 0.9f, 0.8f, 0.2f));
-    warm->setDomain(0, 254);
-    osg::ref_ptr<TransferFunction> cool = new TransferFunction;
-    cool->setPoint(0, osg::Vec4(0, 0, 0, 0));
-    cool->setPoint(60, osg::Vec4(0.1f, 0.4f, 0.9f, 0.0f));
-    cool->setPoint(140, osg::Vec4(0.2f, 0.9f, 0.6f, 0.08f));
-    cool->setDomain(0, 254);
+    osg::ref_ptr<TransferFunction> warm =
+        transferFunction({{0, {0, 0, 0, 0}}, {95, {0.9f, 0.5f, 0.3f, 0.03f}}, {178, {1, 0.9f, 0.8f, 0.2f}}}, 0, 254);
+    osg::ref_ptr<TransferFunction> cool =
+        transferFunction({{0, {0, 0, 0, 0}}, {60, {0.1f, 0.4f, 0.9f, 0.0f}}, {140, {0.2f, 0.9f, 0.6f, 0.08f}}}, 0, 254);
     osg::ref_ptr<VolumeScene> scene = new VolumeScene;
     std::string error;
     ASSERT_TRUE(scene->set("lighting", "off", error)) << error;
@@ -380,10 +372,7 @@ TEST_F(GpuAgainstReference, TwoOverlappingVolumesMatchTheReferenceSumOfMedia)
     }
 
     const int size = 48;
-    ReferenceCamera camera;
-    camera.width = camera.height = size;
-    camera.view = osg::Matrixd::lookAt(osg::Vec3d(200, 380, 140), osg::Vec3d(20, 0, 10), osg::Vec3d(0, 0, 1));
-    camera.projection = osg::Matrixd::perspective(45, 1, 100, 900);
+    const ReferenceCamera camera = perspectiveCamera(size, osg::Vec3d(200, 380, 140), osg::Vec3d(20, 0, 10), 45, 100, 900);
     ReferenceOptions options;
     options.tolerance = 1e-4;
     const ReferenceImage truth = renderReference(ReferenceScene::collect(*scene), camera, options);

@@ -88,11 +88,7 @@ protected:
     /// A TF over [lo, hi] whose colour and opacity rise linearly with the value.
     static osg::ref_ptr<TransferFunction> rampTf(double lo, double hi, float alpha = 0.2f)
     {
-        osg::ref_ptr<TransferFunction> tf = new TransferFunction;
-        tf->setPoint(lo, osg::Vec4(0, 0.2f, 1, 0));
-        tf->setPoint(hi, osg::Vec4(1, 0.8f, 0, alpha));
-        tf->setDomain(lo, hi);
-        return tf;
+        return transferFunction({{lo, {0, 0.2f, 1, 0}}, {hi, {1, 0.8f, 0, alpha}}}, lo, hi);
     }
 };
 
@@ -119,13 +115,8 @@ TEST_F(NumericalExtremes, NarrowSpikeIsMissedByCoarseStepsAndFoundByFineOnes)
     // thick. The reference integrates it exactly; the GPU's error shrinks with its step.
     // Measured on llvmpipe (max abs error): 0.24 at 1 sample/voxel, 0.0036 at 4 and at 16.
     osg::ref_ptr<Volume> ramp = rampAlongZ(VoxelType::UInt8, {4, 4, 64}, 0.0, 252.0);
-    osg::ref_ptr<TransferFunction> spike = new TransferFunction;
-    spike->setPoint(0, osg::Vec4(1, 1, 1, 0));
-    spike->setPoint(126, osg::Vec4(1, 1, 1, 0));
-    spike->setPoint(128, osg::Vec4(1, 1, 1, 0.6f));
-    spike->setPoint(130, osg::Vec4(1, 1, 1, 0));
-    spike->setPoint(255, osg::Vec4(1, 1, 1, 0));
-    spike->setDomain(0, 255);
+    osg::ref_ptr<TransferFunction> spike = transferFunction(
+        {{0, {1, 1, 1, 0}}, {126, {1, 1, 1, 0}}, {128, {1, 1, 1, 0.6f}}, {130, {1, 1, 1, 0}}, {255, {1, 1, 1, 0}}}, 0, 255);
     const ReferenceCamera camera = orthoCamera(8, 8.0);
     std::vector<double> errors;
     for (const char* rate : {"1", "4", "16"}) {

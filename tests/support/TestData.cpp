@@ -92,4 +92,13 @@ osg::ref_ptr<TransferFunction> constantTransferFunction(const osg::Vec4& rgba, d
     return tf;
 }
 
+osg::ref_ptr<TransferFunction> transferFunction(std::initializer_list<std::pair<double, osg::Vec4>> points, double lo,
+                                                double hi)
+{
+    osg::ref_ptr<TransferFunction> tf = new TransferFunction;
+    for (const auto& [value, rgba] : points) tf->setPoint(value, rgba);
+    tf->setDomain(lo, hi);
+    return tf;
+}
+
 }  // namespace volren::test

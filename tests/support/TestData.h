@@ -3,7 +3,9 @@
 #include <volume_model/TransferFunction.h>
 #include <volume_model/Volume.h>
 
+#include <initializer_list>
 #include <string>
+#include <utility>
 
 namespace volren::test {
 
@@ -37,5 +39,9 @@ std::string expectReadError(const std::string& path, const osgDB::Options* optio
 
 /// A TF with the same colour and opacity everywhere on [lo, hi].
 osg::ref_ptr<TransferFunction> constantTransferFunction(const osg::Vec4& rgba, double lo = 0.0, double hi = 255.0);
+
+/// A TF of these control points with the value window [lo, hi].
+osg::ref_ptr<TransferFunction> transferFunction(std::initializer_list<std::pair<double, osg::Vec4>> points, double lo,
+                                                double hi);
 
 }  // namespace volren::test
