@@ -11,6 +11,8 @@
 #include <nlohmann/json.hpp>
 #include <osg/GLObjects>
 #include <osg/LightSource>
+#include <osgDB/FileNameUtils>
+#include <osgDB/FileUtils>
 
 #include <algorithm>
 #include <chrono>
@@ -57,6 +59,18 @@ osg::ref_ptr<VolumeScene> sweepScene()
     return scene;
 }
 
+/// Writes composition `index`'s key and composed fragment source (INDEX.frag) and its 8x8 RGBA
+/// float image (INDEX.rgba, raw) into `dir`: two runs' folders compare with `diff -r`.
+void dumpComposition(const std::string& dir, std::size_t index, const VolumeScene& scene, const float* pixels)
+{
+    const std::string base = osgDB::concatPaths(dir, std::to_string(index));
+    std::ofstream source(base + ".frag", std::ios::binary);
+    for (const auto& [name, program] : scene.programs()) source << "// key: " << program->key << "\n" << program->fragmentSource;
+    std::ofstream image(base + ".rgba", std::ios::binary);
+    image.write(reinterpret_cast<const char*>(pixels), 8 * 8 * 4 * sizeof(float));
+    if (!source || !image) throw std::runtime_error(base + ": cannot write the dump");
+}
+
 double median(std::vector<double> v)
 {
     if (v.empty()) return 0.0;
@@ -71,7 +85,7 @@ int permutationsCommand(const std::vector<std::string>& args)
     bool list = false, compile = false, render = false, pairwise = false;
     unsigned int maxInstances = 1, maxLights = 1;
     std::size_t first = 0, count = std::size_t(-1), shard = 0, shards = 1;
-    std::string statsFile;
+    std::string statsFile, dumpDir;
     auto number = [&](std::size_t& i, const std::string& what) {
         double v = 0;
         if (i + 1 >= args.size() || !parseFiniteNumber(args[i + 1], v) || v < 0 || v != std::floor(v))
@@ -98,6 +112,9 @@ int permutationsCommand(const std::vector<std::string>& args)
                 throw UsageError("--shard needs I/N with 0 <= I < N, got '" + spec + "'");
             shard = std::size_t(a);
             shards = std::size_t(b);
+        } else if (args[i] == "--dump") {
+            if (i + 1 >= args.size()) throw UsageError("--dump needs a folder");
+            dumpDir = args[++i];
         } else if (args[i] == "--stats") {
             if (i + 1 >= args.size()) throw UsageError("--stats needs a file");
             statsFile = args[++i];
@@ -122,6 +139,8 @@ int permutationsCommand(const std::vector<std::string>& args)
     if (list)
         for (std::size_t i = first; i < end; ++i) std::cout << space.at(indices[i]).key() << "\n";
     if (!compile) return 0;
+    if (!dumpDir.empty() && !render) throw UsageError("--dump needs --render");
+    if (!dumpDir.empty() && !osgDB::makeDirectory(dumpDir)) throw std::runtime_error(dumpDir + ": cannot make folder");
 
     OffscreenRenderer renderer(8, 8);
     osg::ref_ptr<VolumeScene> scene = sweepScene();
@@ -143,6 +162,7 @@ int permutationsCommand(const std::vector<std::string>& args)
                 const auto* px = reinterpret_cast<const float*>(renderer.image()->data());
                 for (int k = 0; k < 8 * 8 * 4; ++k)
                     if (!std::isfinite(px[k])) problem = "NaN or Inf pixel";
+                if (!dumpDir.empty()) dumpComposition(dumpDir, indices[i], *scene, px);
             } else {
                 // A compositor per composition: its cache would hold every program of the sweep.
                 ShaderCompositor compositor;

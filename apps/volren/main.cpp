@@ -27,6 +27,7 @@ const char* const usage =
     "                [--tolerance T] [--normals central|exact]   speed against accuracy: table, CSV, JSON, plot\n"
     "  volren permutations [--list] [--compile | --render] [--pairwise] [--max-instances N]\n"
     "                [--max-lights N] [--shard I/N] [--first I] [--count N] [--stats FILE.json]\n"
+    "                [--dump DIR]   (with --render: each composition's source and image into DIR)\n"
     "  volren render --help-settings   every --set KEY with its default, every implementation\n";
 
 }  // namespace
