@@ -10,8 +10,12 @@
 #include "Commands.h"
 #include "SceneSetup.h"
 
-#include <volume_reference/ReferenceRenderer.h>
+#include <volume_reference/ReferenceSetup.h>
 #include <volume_renderer/OffscreenRenderer.h>
+#include <volume_renderer/SceneSettings.h>
+
+#include <volume_model/DefaultScene.h>
+#include <volume_model/Requantise.h>
 
 #include <osg/GLExtensions>
 #include <osgDB/FileNameUtils>
@@ -58,31 +62,17 @@ std::vector<BenchConfig> defaultMatrix()
     return m;
 }
 
-/// `volume` stored as `type`: float keeps the data values; integer types map the value range
-/// onto their full range through the rescale slope and intercept.
-osg::ref_ptr<Volume> storedAs(const Volume& volume, VoxelType type)
+/// What a reference draws, so configurations that draw the same picture share one: each
+/// volume's lighting model as the policy chose it ("lit:blinn_phong", "unlit").
+std::string lightingModel(const ReferenceScene& scene, bool lighting)
 {
-    osg::ref_ptr<Volume> out = new Volume;
-    out->allocate(type, volume.dims());
-    out->setSpacing(volume.spacing());
-    const auto [lo, hi] = volume.valueRange();
-    const double top = type == VoxelType::UInt8 ? 255.0 : 65535.0;
-    const double slope = type == VoxelType::Float32 ? 1.0 : (hi > lo ? (hi - lo) / top : 1.0);
-    const double intercept = type == VoxelType::Float32 ? 0.0 : lo;
-    for (std::size_t i = 0; i < volume.voxelCount(); ++i) {
-        const double v = volume.value(i);
-        if (type == VoxelType::Float32) {
-            reinterpret_cast<float*>(out->data())[i] = float(v);
-        } else {
-            const double q = std::isfinite(v) ? std::clamp(std::round((v - intercept) / slope), 0.0, top) : 0.0;
-            if (type == VoxelType::UInt8) out->data()[i] = std::uint8_t(q);
-            else reinterpret_cast<std::uint16_t*>(out->data())[i] = std::uint16_t(q);
-        }
+    std::string key;
+    for (const auto& placed : scene.volumes) {
+        const auto shading = placed.choice.find("Shading");
+        const bool lit = lighting && !scene.lights.empty() && shading != placed.choice.end() && shading->second != "null";
+        key += (key.empty() ? "" : "+") + (lit ? "lit:" + placed.choice.at("Illumination") : std::string("unlit"));
     }
-    out->setRescale(slope, intercept);
-    out->setName(volume.getName());
-    out->dirty();
-    return out;
+    return key;
 }
 
 double median(std::vector<double> v)
@@ -189,11 +179,11 @@ int benchCommand(const std::vector<std::string>& args)
             ro.height = height;
             osg::ref_ptr<VolumeScene> scene = loadScene(ro);
             const std::string dataset = input.empty() ? "default.osgt (ch2.nii.gz)" : osgDB::getSimpleFileName(input);
-            const std::vector<VolumeNode*> nodes = volumeNodes(*scene);
+            const std::vector<VolumeNode*> nodes = findVolumeNodes(*scene);
             if (nodes.empty()) throw std::runtime_error(dataset + ": the scene shows no volume");
             std::vector<std::pair<RenderSettings, osg::ref_ptr<Volume>>> original;
             for (VolumeNode* n : nodes) original.emplace_back(n->settings, n->getVolume());
-            const bool lightingOn = scene->lighting;
+            const PassSettings originalPass = scene->pass;
 
             OffscreenRenderer renderer(width, height);
             report.context = renderer.contextDescription();
@@ -208,27 +198,27 @@ int benchCommand(const std::vector<std::string>& args)
             std::map<std::string, ReferenceImage> truths;  // by what is drawn (the lighting model)
             for (const BenchConfig& config : matrix) {
                 // The scene as the configuration draws it.
-                scene->lighting = lightingOn;
+                scene->pass = originalPass;
                 for (std::size_t k = 0; k < nodes.size(); ++k) {
                     nodes[k]->settings = original[k].first;
                     nodes[k]->setVolume(original[k].second.get());
                 }
-                std::string error;
-                for (const auto& [key, value] : config.settings)
-                    if (!scene->set(key, value, error))
-                        for (VolumeNode* n : nodes)
-                            if (!n->settings.set(key, value, error)) throw UsageError(config.name + ": " + error);
-
-                // Its truth: the reference of the same scene at full precision.
-                const std::string truthKey = std::string(scene->lighting ? "lit:" : "unlit:") +
-                                             nodes.front()->settings.get("illumination");
+                for (const auto& [key, value] : config.settings) {
+                    try {
+                        applySetting(*scene, key, value);
+                    } catch (const SettingError& e) {
+                        throw UsageError(config.name + ": " + e.what());
+                    }
+                }
+                // Its truth: the reference of the same scene at full precision, as volren reference makes it.
+                const std::string truthKey = lightingModel(referenceScene(*scene), scene->pass.lighting);
                 if (!truths.count(truthKey)) {
                     ReferenceOptions ref;
                     ref.tolerance = options.tolerance;
-                    ref.lighting = scene->lighting;
                     ref.gradient = options.normals;
                     const auto start = std::chrono::steady_clock::now();
-                    truths[truthKey] = renderReference(ReferenceScene::collect(*scene), camera, ref);
+                    const ReferenceSetup setup = referenceSetup(*scene, camera, ref);
+                    truths[truthKey] = renderReference(setup.scene, camera, setup.options);
                     std::cerr << "volren bench: reference '" << truthKey << "' of " << dataset << " at " << width << "x"
                               << height << " in "
                               << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s"
@@ -239,7 +229,7 @@ int benchCommand(const std::vector<std::string>& args)
                         const VoxelType type = config.precision == "8bit"    ? VoxelType::UInt8
                                                : config.precision == "16bit" ? VoxelType::UInt16
                                                                              : VoxelType::Float32;
-                        n->setVolume(storedAs(*n->getVolume(), type).get());
+                        n->setVolume(requantise(*n->getVolume(), type).get());
                     }
 
                 renderer.setScene(scene.get());
@@ -277,11 +267,11 @@ int benchCommand(const std::vector<std::string>& args)
                     nodes[k]->settings = original[k].first;
                     nodes[k]->setVolume(original[k].second.get());
                 }
-                scene->lighting = lightingOn;
+                scene->pass = originalPass;
                 const auto peer = runVtkPeer(*scene, camera, options.frames, options.out);
                 BenchRow row = peer.first;
                 row.dataset = dataset;
-                const std::string truthKey = std::string(lightingOn ? "lit:" : "unlit:") + nodes.front()->settings.get("illumination");
+                const std::string truthKey = lightingModel(referenceScene(*scene), scene->pass.lighting);
                 row.truth = truthKey;
                 if (truths.count(truthKey)) row.error = imageError(*peer.second, truths[truthKey]);
                 report.rows.push_back(row);

@@ -1,6 +1,9 @@
 #include "BenchReport.h"
 #include "SceneSetup.h"
 
+#include <volume_renderer/SampleDistance.h>
+
+#include <volume_model/DefaultScene.h>
 #include <volume_model/ReadVolume.h>
 #include <volume_model/TransferFunction.h>
 #include <volume_model/VolumeNode.h>
@@ -169,7 +172,7 @@ void writeReport(BenchReport& report, const std::string& directory)
 std::pair<BenchRow, osg::ref_ptr<osg::Image>> runVtkPeer(const VolumeScene& scene, const ReferenceCamera& camera,
                                                          int frames, const std::string& directory)
 {
-    const std::vector<VolumeNode*> nodes = volumeNodes(const_cast<VolumeScene&>(scene));
+    const std::vector<VolumeNode*> nodes = findVolumeNodes(const_cast<VolumeScene&>(scene));
     if (nodes.size() != 1) throw std::runtime_error("bench --vtk: the scene must hold exactly one volume");
     const VolumeNode& node = *nodes.front();
     const Volume& volume = *node.getVolume();
@@ -185,7 +188,7 @@ std::pair<BenchRow, osg::ref_ptr<osg::Image>> runVtkPeer(const VolumeScene& scen
     nlohmann::json points = nlohmann::json::array();
     for (const auto& [value, rgba] : node.getTransferFunction()->points())
         points.push_back({value, rgba.r(), rgba.g(), rgba.b(), rgba.a()});
-    const double step = VolumeScene::effectiveSampleDistance(node);  // the step volren marches
+    const double step = effectiveSampleDistance(node);  // the step volren marches
     const nlohmann::json spec = {
         {"volume", volume.sourceFile},
         {"spacing", {volume.spacing().x(), volume.spacing().y(), volume.spacing().z()}},
@@ -201,7 +204,7 @@ std::pair<BenchRow, osg::ref_ptr<osg::Image>> runVtkPeer(const VolumeScene& scen
         {"height", camera.height},
         {"sample_distance", step},
         {"unit_distance", volume.minSpacing()},
-        {"lighting", scene.lighting},
+        {"lighting", scene.pass.lighting},
         {"ambient", node.settings.ambient},
         {"specular", node.settings.specular},
         {"shininess", node.settings.shininess},

@@ -3,8 +3,7 @@
 #include "ImageWriter.h"
 #include "SceneSetup.h"
 
-#include <volume_reference/ReferenceRenderer.h>
-#include <volume_renderer/OffscreenRenderer.h>
+#include <volume_reference/ReferenceSetup.h>
 
 #include <osg/Camera>
 
@@ -28,42 +27,13 @@ int referenceCommand(const std::vector<std::string>& args)
     ReferenceOptions reference;
     reference.background = options.background;
     const auto start = std::chrono::steady_clock::now();
-    const ReferenceScene content = ReferenceScene::collect(*scene);
-    if (content.volumes.empty()) throw std::runtime_error(inputName(options) + ": the scene shows no volume");
-    // The pass settings the reference follows: lighting on/off, and slots forced null for all.
-    reference.lighting = scene->lighting;
-    for (const auto& placed : content.volumes)
-        for (const std::string& slot : scene->forceNull)
-            const_cast<VolumeNode&>(static_cast<const VolumeNode&>(*placed.node)).settings.forceNull.insert(slot);
-    // Opaque geometry is rasterised once for the same camera, with every volume hidden: the rays
-    // end at its depth and the volumes are composited over its colour.
-    {
-        std::vector<std::pair<osg::Node*, osg::Node::NodeMask>> hidden;
-        for (const auto& placed : content.volumes) {
-            auto* node = const_cast<osg::Node*>(placed.node.get());
-            hidden.emplace_back(node, node->getNodeMask());
-            node->setNodeMask(0);
-        }
-        OffscreenRenderer geometry(options.width, options.height);
-        geometry.setReadDepth(true);
-        geometry.setScene(scene.get());
-        geometry.setBackground(osg::Vec3(options.background));
-        geometry.camera()->setViewMatrix(view.view);
-        geometry.camera()->setProjectionMatrix(view.projection);
-        geometry.camera()->setComputeNearFarMode(osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR);
-        geometry.renderFrame();
-        for (auto& [node, mask] : hidden) node->setNodeMask(mask);
-        const auto* depth = reinterpret_cast<const float*>(geometry.depthImage()->data());
-        const auto* colour = reinterpret_cast<const float*>(geometry.image()->data());
-        const std::size_t pixels = std::size_t(options.width) * options.height;
-        bool any = false;
-        for (std::size_t i = 0; i < pixels && !any; ++i) any = depth[i] < 1.0f;
-        if (any) {
-            reference.geometryDepth.assign(depth, depth + pixels);
-            reference.geometryColour.assign(colour, colour + pixels * 4);
-        }
+    ReferenceSetup setup;
+    try {
+        setup = referenceSetup(*scene, view, reference);
+    } catch (const std::runtime_error& e) {
+        throw std::runtime_error(inputName(options) + ": " + e.what());
     }
-    const ReferenceImage image = renderReference(content, view, reference);
+    const ReferenceImage image = renderReference(setup.scene, view, setup.options);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     osg::ref_ptr<osg::Image> out = new osg::Image;
@@ -73,7 +43,7 @@ int referenceCommand(const std::vector<std::string>& args)
     writeImage(*out, options.output);
     std::cout << "volren: wrote " << options.output << " (" << image.width << "x" << image.height << ", " << inputName(options)
               << "; reference in " << seconds << " s, finest step " << image.finestStepUsed << ", "
-              << image.unconverged << " rays not converged to " << reference.tolerance << ")" << std::endl;
+              << image.unconverged << " rays not converged to " << setup.options.tolerance << ")" << std::endl;
     return 0;
 }
 

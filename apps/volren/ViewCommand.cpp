@@ -9,6 +9,8 @@
 #include <volume_renderer/ShaderFunctionRegistry.h>
 #include <volume_renderer/VolumeScene.h>
 
+#include <volume_model/DefaultScene.h>
+
 #include <imgui.h>
 #include <osg/DisplaySettings>
 #include <osgGA/TrackballManipulator>
@@ -76,7 +78,7 @@ int viewCommand(const std::vector<std::string>& args)
     viewer.setSceneData(root.get());
 
     // The transfer-function editor of the first volume, drawn over the scene.
-    const std::vector<VolumeNode*> nodes = volumeNodes(*root);
+    const std::vector<VolumeNode*> nodes = findVolumeNodes(*root);
     VolumeNode* node = nodes.empty() ? nullptr : nodes.front();
     std::unique_ptr<TransferFunctionEditor> editor;
     std::unique_ptr<RenderSettingsPanel> panel;

@@ -3,6 +3,8 @@
 #include "Commands.h"
 #include "SceneSetup.h"
 
+#include <volume_renderer/SceneSettings.h>
+
 #include <iostream>
 #include <string>
 #include <vector>
@@ -40,11 +42,11 @@ int main(int argc, char** argv)
     try {
         for (const std::string& a : args)
             if (a == "--help-settings") {
-                std::cout << volren::app::settingsHelp();
+                std::cout << volren::settingsHelp(volren::CompositionPolicy());
                 return 0;
             }
         if (command == "--help-settings") {
-            std::cout << volren::app::settingsHelp();
+            std::cout << volren::settingsHelp(volren::CompositionPolicy());
             return 0;
         }
         if (command.empty()) return volren::app::renderCommand({}, true);

@@ -261,7 +261,39 @@ TEST(VolrenCli, BenchWritesTheMatrixWithErrorsAgainstTheReference)
         EXPECT_LT(rmse, 0.1) << line;
     }
     EXPECT_EQ(rows, 2);
-    EXPECT_NE(run.output.find("reference 'unlit:'"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("reference 'unlit'"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("reference 'lit:blinn_phong'"), std::string::npos) << run.output;
+}
+
+/// The first number after `label` in `text` (-1 when absent).
+double numberAfter(const std::string& text, const std::string& label)
+{
+    const std::size_t at = text.find(label);
+    return at == std::string::npos ? -1.0 : std::stod(text.substr(at + label.size()));
+}
+
+TEST(VolrenCli, BenchMeasuresAgainstTheReferenceVolrenReferenceMakes)
+{
+    // The rod of ct-instrument is opaque geometry: bench's truth must end the rays at it and
+    // composite over it, as `volren reference` does, so bench's error is what `volren compare`
+    // reports for render against reference (the same view, tolerance and normals).
+    VOLREN_REQUIRE_SHARED_DATA();
+    const std::string dir = tempDirectory();
+    const std::string scene = std::string(VOLREN_SOURCE_DIR) + "/scenes/ct-instrument.osgt";
+    const std::string size = " --size 48x40";
+    const CliRun bench = volren("bench '" + scene + "'" + size +
+                                " --frames 1 --configs default --tolerance 1e-4 --normals exact --out '" + dir + "/b'");
+    ASSERT_EQ(bench.exitCode, 0) << bench.output;
+    ASSERT_EQ(volren("render '" + scene + "' -o '" + dir + "/gpu.exr'" + size).exitCode, 0);
+    ASSERT_EQ(volren("reference '" + scene + "' -o '" + dir + "/truth.exr'" + size).exitCode, 0);
+    const CliRun compare = volren("compare '" + dir + "/gpu.exr' '" + dir + "/truth.exr'");
+    ASSERT_EQ(compare.exitCode, 0) << compare.output;
+    const double compared = numberAfter(compare.output, "RMSE:");
+    const double benched = numberAfter(bench.output, "default: ");  // "default: MS ms, RMSE R"
+    const double rmse = numberAfter(bench.output.substr(bench.output.find("volren bench: default:")), "RMSE ");
+    ASSERT_GT(benched, 0.0) << bench.output;
+    ASSERT_GT(compared, 0.0) << compare.output;
+    EXPECT_NEAR(rmse, compared, 1e-4 * compared) << bench.output << compare.output;
 }
 
 TEST(VolrenCli, InfoPrintsGeometryAndValues)

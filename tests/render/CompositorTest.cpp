@@ -1,5 +1,6 @@
 // The shader compositor: composition keys, program caching, source assembly and the errors
 // that name slot, implementation and file.
+#include <volume_renderer/SampleDistance.h>
 #include <volume_renderer/ShaderCompositor.h>
 #include <volume_renderer/Slots.h>
 #include <volume_renderer/VolumeScene.h>
@@ -87,9 +88,7 @@ TEST(Compositor, MissingShaderFileNamesImplementationAndPath)
 {
     ShaderFunctionRegistry registry;
     registry.addBuiltins();
-    ShaderFunction missing = ShaderFunction::plain("Jitter", "hash");
-    missing.file = "Jitter/does_not_exist.glsl";
-    registry.add(missing);
+    registry.add({.slot = "Jitter", .name = "hash", .file = "Jitter/does_not_exist.glsl"});
     ShaderCompositor compositor(registry);
     try {
         compositor.program(Composition{});
@@ -131,9 +130,9 @@ TEST(Compositor, SceneAnalysisPicksJitterFromTheNodeSettings)
 {
     osg::ref_ptr<VolumeScene> scene = new VolumeScene;
     osg::ref_ptr<VolumeNode> node = new VolumeNode;
-    EXPECT_EQ(scene->chooseComposition(*node, {}).functionFor("Jitter"), "hash");
+    EXPECT_EQ(scene->policy().choose(node->settings, {}, scene->pass).composition.functionFor("Jitter"), "hash");
     node->settings.functions["Jitter"] = "null";
-    EXPECT_EQ(scene->chooseComposition(*node, {}).functionFor("Jitter"), "null");
+    EXPECT_EQ(scene->policy().choose(node->settings, {}, scene->pass).composition.functionFor("Jitter"), "null");
 }
 
 TEST(Compositor, SampleDistanceIsAFactorOfTheSmallestSpacingAndBounded)
@@ -142,11 +141,11 @@ TEST(Compositor, SampleDistanceIsAFactorOfTheSmallestSpacingAndBounded)
     osg::ref_ptr<VolumeNode> node = new VolumeNode;
     node->setVolume(volume.get());
     node->settings.sampleDistanceFactor = 0.25;
-    EXPECT_DOUBLE_EQ(VolumeScene::effectiveSampleDistance(*node), 0.125);
+    EXPECT_DOUBLE_EQ(effectiveSampleDistance(*node), 0.125);
     node->settings.sampleDistance = 0.7;
-    EXPECT_DOUBLE_EQ(VolumeScene::effectiveSampleDistance(*node), 0.7);
+    EXPECT_DOUBLE_EQ(effectiveSampleDistance(*node), 0.7);
     node->settings.sampleDistance = 1e-12;  // absurd: coarsened so a ray takes at most maxSteps samples
-    EXPECT_DOUBLE_EQ(VolumeScene::effectiveSampleDistance(*node), volume->worldSize().length() / VolumeScene::maxSteps);
+    EXPECT_DOUBLE_EQ(effectiveSampleDistance(*node), volume->worldSize().length() / maxStepsPerRay);
 }
 
 }  // namespace

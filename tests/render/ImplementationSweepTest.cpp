@@ -33,38 +33,21 @@ std::vector<Implementation> allImplementations()
     return all;
 }
 
-/// The default lit composition with `impl` swapped in, adjusted to stay valid.
+/// The policy's choice for a lit, clipped volume (every clip kind offered) with `impl` asked for,
+/// or, for a template slot, its instances narrowed to `impl` alone.
 Composition compositionWith(const Implementation& impl)
 {
-    Composition c;
-    c.choice = {{"Shading", "lighting"}, {"Illumination", "blinn_phong"}, {"Gradient", "central"},
-                {"GradientInput", "scalar"}};
-    c.lightCount = 1;
+    const CompositionPolicy policy;
+    RenderSettings settings;
+    if (!findSlot(impl.slot)->isTemplate) settings.functions[impl.slot] = impl.name;
+    static osg::ref_ptr<ClipPlaneNode> plane = new ClipPlaneNode;
+    SceneOffer offer;
+    offer.lights.resize(1);
+    offer.clips.push_back({plane.get(), osg::Matrixd()});
+    Composition c = policy.choose(settings, offer, {}).composition;
     if (findSlot(impl.slot)->isTemplate) {
+        c.instances.clear();
         if (impl.name != "null") c.instances[impl.slot] = {impl.name};
-    } else {
-        c.choice[impl.slot] = impl.name;
-    }
-    const std::string traversal = c.functionFor("RayTraversal"), shading = c.functionFor("Shading");
-    if (traversal == "mip" || traversal == "minip" || traversal == "average" || traversal == "gmip" ||
-        shading == "null" || c.functionFor("Illumination") == "null") {
-        c.choice["Shading"] = shading == "debug" ? "debug" : "null";
-        c.choice["Illumination"] = "null";
-        c.lightCount = 0;
-    }
-    if (shading == "debug") c.choice["Illumination"] = "null";
-    if (impl.slot == "Gradient" && impl.name == "null") c.choice["GradientInput"] = "null";
-    if (impl.slot == "GradientInput" && impl.name == "null") c.choice["Gradient"] = "null";
-    if (c.functionFor("Shading") == "null" && traversal != "gmip") {
-        c.choice["Gradient"] = "null";
-        c.choice["GradientInput"] = "null";
-    }
-    if (c.functionFor("RaySetup") == "null" || traversal == "null") {
-        Composition bare;  // nothing marches: every other slot null
-        for (const SlotInfo& s : slots())
-            if (!s.isTemplate) bare.choice[s.name] = "null";
-        bare.choice["RaySetup"] = c.functionFor("RaySetup");
-        return bare;
     }
     return c;
 }
@@ -77,7 +60,7 @@ TEST_P(EveryImplementation, RendersWithoutGlErrorsOrNaN)
 {
     const Implementation impl = GetParam();
     const Composition composition = compositionWith(impl);
-    ASSERT_TRUE(PermutationSpace::isValid(composition)) << composition.key();
+    ASSERT_EQ(CompositionPolicy().invalidReason(composition), "") << composition.key();
 
     osg::ref_ptr<Volume> volume = new Volume;
     volume->allocate(VoxelType::Float32, {12, 10, 8});

@@ -8,7 +8,7 @@
 #include "RenderFixture.h"
 #include "TestData.h"
 
-#include <volume_reference/ReferenceRenderer.h>
+#include <volume_reference/ReferenceSetup.h>
 
 #include <osg/LightSource>
 
@@ -269,7 +269,7 @@ TEST_F(NumericalExtremes, ZeroGradientsUnderLightingFaceTheViewer)
     const double alpha = -std::expm1(8.0 * std::log1p(-double(0.1f)));
     const RenderSettings defaults;
     const osg::Vec3d albedo(0.5, 0.25, 0.125);
-    const ReferenceImage truth = renderReference(ReferenceScene::collect(*scene), camera);
+    const ReferenceImage truth = renderReference(referenceScene(*scene), camera);
     for (int k = 0; k < 3; ++k) {
         const double lit = albedo[k] * (defaults.ambient + 1.0) + defaults.specular;
         EXPECT_NEAR(truth.at(8, 8, k), lit * alpha, 1e-6) << "reference, channel " << k;

@@ -239,7 +239,7 @@ TEST_F(OpaqueGeometry, TransparentGeometryAndEmptyScenesNeedNoDepthTexture)
 TEST_F(OpaqueGeometry, ClipRayForcedNullDrawsTheVolumeOverTheGeometry)
 {
     osg::ref_ptr<VolumeScene> scene = sceneWith(flatSquare({0, 0, 0}, 4.0f, osg::Vec4(1, 1, 1, 1)).get());
-    scene->forceNull.insert("ClipRay");
+    scene->pass.forceNull.insert("ClipRay");
     const Pixels img = renderOrthoFromPlusZ(scene.get(), 40, 40, 20.0);
     EXPECT_NE(scene->compositionKeys()[0].find("ClipRay=[];"), std::string::npos);
     // The whole box is composited over the square.

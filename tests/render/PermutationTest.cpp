@@ -30,7 +30,7 @@ TEST(Permutations, EveryCompositionIsValidAndDistinct)
     std::set<std::string> keys;
     for (std::size_t i = 0; i < space.size(); i += 97) {
         const Composition c = space.at(i);
-        EXPECT_TRUE(PermutationSpace::isValid(c)) << c.key();
+        EXPECT_TRUE(CompositionPolicy().isValid(c)) << c.key();
         keys.insert(c.key());
     }
     EXPECT_EQ(keys.size(), (space.size() + 96) / 97);
@@ -42,22 +42,22 @@ TEST(Permutations, ValidityRulesRejectContradictions)
     lit.choice = {{"Shading", "lighting"}, {"Illumination", "lambert"}, {"Gradient", "central"},
                   {"GradientInput", "scalar"}};
     lit.lightCount = 1;
-    EXPECT_TRUE(PermutationSpace::isValid(lit));
+    EXPECT_TRUE(CompositionPolicy().isValid(lit));
     Composition noLight = lit;
     noLight.lightCount = 0;
-    EXPECT_FALSE(PermutationSpace::isValid(noLight));
+    EXPECT_FALSE(CompositionPolicy().isValid(noLight));
     Composition halfGradient = lit;
     halfGradient.choice["GradientInput"] = "null";
-    EXPECT_FALSE(PermutationSpace::isValid(halfGradient));
+    EXPECT_FALSE(CompositionPolicy().isValid(halfGradient));
     Composition mipLit = lit;
     mipLit.choice["RayTraversal"] = "mip";
-    EXPECT_FALSE(PermutationSpace::isValid(mipLit));
+    EXPECT_FALSE(CompositionPolicy().isValid(mipLit));
     Composition gmip;
     gmip.choice = {{"RayTraversal", "gmip"}, {"Gradient", "central9"}, {"GradientInput", "alpha"}};
-    EXPECT_TRUE(PermutationSpace::isValid(gmip));
+    EXPECT_TRUE(CompositionPolicy().isValid(gmip));
     gmip.choice["Gradient"] = "null";
     gmip.choice["GradientInput"] = "null";
-    EXPECT_FALSE(PermutationSpace::isValid(gmip));
+    EXPECT_FALSE(CompositionPolicy().isValid(gmip));
 }
 
 TEST(Permutations, PairwiseCoverContainsEveryPairOfTheSpace)

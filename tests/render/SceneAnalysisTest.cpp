@@ -7,6 +7,7 @@
 #include <volume_model/ClipEllipsoidNode.h>
 #include <volume_model/ClipPlaneNode.h>
 
+#include <osg/MatrixTransform>
 #include <osg/LightSource>
 
 namespace volren::test {
@@ -55,7 +56,7 @@ TEST_F(SceneAnalysis, LightsSwitchOnShadingAndCountInTheKey)
                              "GradientInput=scalar;", "lights=2;"})
         EXPECT_NE(key.find(part), std::string::npos) << part << " in " << key;
     std::string error;
-    ASSERT_TRUE(scene->set("lighting", "off", error)) << error;
+    ASSERT_TRUE(scene->pass.set("lighting", "off", error)) << error;
     key = keyAfterFrame();
     EXPECT_NE(key.find("Shading=null;"), std::string::npos) << key;
     EXPECT_NE(key.find("lights=0;"), std::string::npos) << key;

@@ -1,4 +1,5 @@
 #include "RenderFixture.h"
+#include "TestData.h"
 
 #include <volume_renderer/MatrixUniforms.h>
 
@@ -110,11 +111,7 @@ osg::ref_ptr<osg::Node> RenderFixture::flatSphere(const osg::Vec3& centre, float
 
 osg::ref_ptr<VolumeNode> RenderFixture::volumeNode(Volume* volume, TransferFunction* tf, bool jitter)
 {
-    osg::ref_ptr<VolumeNode> node = new VolumeNode;
-    node->setVolume(volume);
-    node->setTransferFunction(tf);
-    node->settings.functions["Jitter"] = jitter ? "hash" : "null";
-    return node;
+    return makeVolumeNode(volume, tf, jitter);
 }
 
 }  // namespace volren::test

@@ -101,4 +101,13 @@ osg::ref_ptr<TransferFunction> transferFunction(std::initializer_list<std::pair<
     return tf;
 }
 
+osg::ref_ptr<VolumeNode> makeVolumeNode(Volume* volume, TransferFunction* tf, bool jitter)
+{
+    osg::ref_ptr<VolumeNode> node = new VolumeNode;
+    node->setVolume(volume);
+    node->setTransferFunction(tf);
+    node->settings.functions["Jitter"] = jitter ? "hash" : "null";
+    return node;
+}
+
 }  // namespace volren::test

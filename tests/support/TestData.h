@@ -1,7 +1,9 @@
 #pragma once
-#include <osgDB/Options>
 #include <volume_model/TransferFunction.h>
 #include <volume_model/Volume.h>
+#include <volume_model/VolumeNode.h>
+
+#include <osgDB/Options>
 
 #include <initializer_list>
 #include <string>
@@ -43,5 +45,8 @@ osg::ref_ptr<TransferFunction> constantTransferFunction(const osg::Vec4& rgba, d
 /// A TF of these control points with the value window [lo, hi].
 osg::ref_ptr<TransferFunction> transferFunction(std::initializer_list<std::pair<double, osg::Vec4>> points, double lo,
                                                 double hi);
+
+/// A VolumeNode showing `volume` through `tf`, jitter off unless asked.
+osg::ref_ptr<VolumeNode> makeVolumeNode(Volume* volume, TransferFunction* tf, bool jitter = false);
 
 }  // namespace volren::test

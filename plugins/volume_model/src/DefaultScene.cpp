@@ -61,4 +61,20 @@ VolumeNode* findFirstVolumeNode(osg::Node* root)
     return finder.found;
 }
 
+std::vector<VolumeNode*> findVolumeNodes(osg::Node& root)
+{
+    struct Collect : osg::NodeVisitor
+    {
+        Collect() : osg::NodeVisitor(TRAVERSE_ALL_CHILDREN) {}
+        std::vector<VolumeNode*> nodes;
+        void apply(osg::Node& node) override
+        {
+            if (auto* v = dynamic_cast<VolumeNode*>(&node)) nodes.push_back(v);
+            traverse(node);
+        }
+    } collect;
+    root.accept(collect);
+    return collect.nodes;
+}
+
 }  // namespace volren

@@ -22,15 +22,11 @@ const std::vector<std::pair<std::string, std::string>>& slotKeys()
     return keys;
 }
 
-/// Short names users type, mapped to implementation names.
-std::string canonicalFunction(const std::string& slot, const std::string& value)
+/// Every slot has a null implementation: the usual words for "off" name it. Other names (and
+/// aliases of implementations) are the renderer's to resolve (volren::applyNodeSetting).
+std::string canonicalFunction(const std::string& value)
 {
     if (value == "off" || value == "none" || value == "0" || value == "false") return "null";
-    if (slot == "Jitter" && (value == "on" || value == "1" || value == "true")) return "hash";
-    if (slot == "RayTraversal" && value == "dvr") return "dvr_front_to_back";
-    if (slot == "Gradient" && value == "central-9") return "central9";
-    if (slot == "Illumination" && (value == "cooktorrance" || value == "cook-torrance")) return "cook_torrance";
-    if (slot == "Illumination" && (value == "blinnphong" || value == "blinn-phong" || value == "phong")) return "blinn_phong";
     return value;
 }
 
@@ -135,7 +131,7 @@ bool RenderSettings::set(const std::string& key, const std::string& value, std::
 {
     const std::string k = lower(key);
     if (const std::string slot = slotForKey(k); !slot.empty()) {
-        const std::string name = canonicalFunction(slot, lower(value));
+        const std::string name = canonicalFunction(lower(value));
         if (!isIdentifier(name)) return error = key + " must name an implementation, got '" + value + "'", false;
         functions[slot] = name;
         return true;

@@ -168,20 +168,25 @@ struct Medium
     }
 };
 
-/// The node's choice for `slot` (forced null, chosen, or `fallback`).
-std::string choiceOf(const RenderSettings& s, const std::string& slot, const std::string& fallback)
+/// The implementation of `slot` for a volume: the renderer's choice when given, else the node's
+/// own (forced null, chosen, or null when unset).
+std::string choiceOf(const ReferenceScene::Placed& placed, const RenderSettings& s, const std::string& slot)
 {
+    if (auto it = placed.choice.find(slot); it != placed.choice.end()) return it->second;
     if (s.forceNull.count(slot)) return "null";
     auto it = s.functions.find(slot);
-    return it == s.functions.end() ? fallback : it->second;
+    return it == s.functions.end() ? "null" : it->second;
 }
 
-/// Sets how `m` is lit from `node`'s settings and the lights reaching it.
-void setShading(Medium& m, const VolumeNode& node, bool lit)
+/// Sets how `m` is lit from the volume's choices (the renderer's, or the node's own when lights
+/// reach it: `lit`).
+void setShading(Medium& m, const ReferenceScene::Placed& placed, bool lit)
 {
+    const auto& node = static_cast<const VolumeNode&>(*placed.node);
     const RenderSettings& s = node.settings;
-    const std::string illumination = choiceOf(s, "Illumination", lit ? "blinn_phong" : "null");
-    const std::string shading = choiceOf(s, "Shading", lit && illumination != "null" ? "lighting" : "null");
+    const bool decided = !placed.choice.empty();
+    const std::string illumination = decided || lit ? choiceOf(placed, s, "Illumination") : "null";
+    const std::string shading = decided || lit ? choiceOf(placed, s, "Shading") : "null";
     if (shading == "null") m.shading = Shading::None;
     else if (shading == "lighting") m.shading = Shading::Lighting;
     else if (shading == "lighting_threshold") m.shading = Shading::Threshold;
@@ -234,7 +239,7 @@ public:
             m.unitLength = m.volume->minSpacing();
             m.domainMin = m.tf->domainMin();
             m.domainMax = m.tf->domainMax();
-            setShading(m, node, lightCount > 0);
+            setShading(m, placed, lightCount > 0);
             m.gradientKind = options.gradient;
             for (std::size_t i = 0; i < lightCount; ++i) {
                 const auto& source = static_cast<const osg::LightSource&>(*scene.lights[i].node);

@@ -16,6 +16,7 @@ public:
     osg::BoundingBoxd box{-1, -1, -1, 1, 1, 1};
 
     bool leavesUnchanged(const std::array<osg::Vec3d, 8>& corners) const override;
+    const char* clipKind() const override { return "box"; }
     osg::BoundingSphere computeBound() const override;
 
 protected:

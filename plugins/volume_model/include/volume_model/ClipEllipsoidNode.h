@@ -16,6 +16,7 @@ public:
     osg::Vec3d radii{1, 1, 1};   ///< semi-axes along x, y, z (positive)
 
     bool leavesUnchanged(const std::array<osg::Vec3d, 8>& corners) const override;
+    const char* clipKind() const override { return "ellipsoid"; }
     osg::BoundingSphere computeBound() const override;
 
 protected:

@@ -18,6 +18,7 @@ public:
     double threshold = 0.5;     ///< data value at and above which the mask keeps
 
     bool leavesUnchanged(const std::array<osg::Vec3d, 8>&) const override { return false; }
+    const char* clipKind() const override { return "mask"; }
     osg::BoundingSphere computeBound() const override;
 
 protected:

@@ -22,6 +22,9 @@ public:
     /// Whether the shape leaves every point of the box with corners `corners` (local
     /// coordinates) unchanged; conservative (false when unsure).
     virtual bool leavesUnchanged(const std::array<osg::Vec3d, 8>& corners) const = 0;
+    /// The kind of shape ("plane", "box", "ellipsoid", "mask"): the renderer clips it with the
+    /// implementation that declares this kind.
+    virtual const char* clipKind() const = 0;
 
 protected:
     ClipNode() = default;

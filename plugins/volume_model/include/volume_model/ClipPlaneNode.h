@@ -18,6 +18,7 @@ public:
     osg::Plane plane{0.0, 0.0, 1.0, 0.0};
 
     bool leavesUnchanged(const std::array<osg::Vec3d, 8>& corners) const override;
+    const char* clipKind() const override { return "plane"; }
     osg::BoundingSphere computeBound() const override { return osg::BoundingSphere(); }  ///< unbounded
 
 protected:

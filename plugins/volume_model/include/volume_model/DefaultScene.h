@@ -4,6 +4,8 @@
 
 #include <osg/Group>
 
+#include <vector>
+
 namespace volren {
 
 /// A new volume pass (a `volren::VolumeScene`, made through OSG's wrapper registry so that
@@ -18,5 +20,7 @@ osg::ref_ptr<osg::Group> makeDefaultScene(Volume* volume);
 
 /// First VolumeNode found below `root` (depth first), or null.
 VolumeNode* findFirstVolumeNode(osg::Node* root);
+/// Every VolumeNode below `root`, in traversal order (all children, whatever their masks).
+std::vector<VolumeNode*> findVolumeNodes(osg::Node& root);
 
 }  // namespace volren

@@ -8,8 +8,9 @@
 namespace volren {
 
 /// Per-node render settings: plain data, compared by value by the renderer each frame.
-/// Implementation choices are by slot name (see shaders/slots.glsl); the renderer validates
-/// names against its registry and fills unset slots from the scene.
+/// Implementation choices are by slot name (see shaders/slots.glsl); the renderer resolves and
+/// validates names against its registry (volren::applyNodeSetting) and its CompositionPolicy
+/// fills unset slots from the scene.
 struct RenderSettings
 {
     /// Step between samples as a factor of the volume's smallest voxel spacing.

@@ -5,6 +5,8 @@
 #include <osg/Matrixd>
 #include <osg/Node>
 
+#include <map>
+#include <string>
 #include <vector>
 
 namespace volren {
@@ -17,6 +19,10 @@ struct ReferenceScene
     {
         osg::ref_ptr<const osg::Node> node;
         osg::Matrixd localToWorld;
+        /// Volumes: the implementations the renderer chose for it (slot -> name; the lighting
+        /// model is read from Shading and Illumination). Empty: the node's own settings, an
+        /// unset slot being null (referenceSetup() fills it from the CompositionPolicy).
+        std::map<std::string, std::string> choice = {};
     };
     std::vector<Placed> volumes;  ///< VolumeNodes with a volume and a transfer function
     std::vector<Placed> clips;    ///< ClipNodes

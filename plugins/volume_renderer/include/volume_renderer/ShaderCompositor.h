@@ -1,8 +1,10 @@
 #pragma once
+#include <volume_renderer/Composition.h>
 #include <volume_renderer/ShaderFunctionRegistry.h>
 
 #include <osg/Program>
 
+#include <list>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -10,24 +12,6 @@
 #include <vector>
 
 namespace volren {
-
-/// What the scene asks of the ray caster: one implementation per ordinary slot, a list of
-/// instances per template slot, and the number of lights.
-struct Composition
-{
-    std::map<std::string, std::string> choice;                  ///< slot -> implementation
-    std::map<std::string, std::vector<std::string>> instances;  ///< template slot -> one per shape
-    unsigned int lightCount = 0;                                ///< lights the shading loops over
-    /// A multi-volume set: one composition per member (their sample slots, clip planes and
-    /// lights), marched along one ray by this composition's RayTraversal (`sum_of_media`).
-    std::vector<Composition> members;
-
-    /// Full key "Slot=impl;...;ClipPosition=[box,plane];lights=N;" over every slot, defaults
-    /// filled in; programs are cached by the whole key.
-    std::string key() const;
-    /// Implementation for ordinary `slot` (its default when not chosen).
-    std::string functionFor(const std::string& slot) const;
-};
 
 /// One implementation bound into a program: which one, and its template instance suffix.
 struct Binding
@@ -54,6 +38,9 @@ struct ComposedProgram
 };
 
 /// Assembles one GLSL program per composition from shader-function files and caches it.
+/// A program lives while a volume uses it; of the unused ones the most recently used
+/// `cacheSize` are kept (switching settings back does not recompile) and older ones are
+/// released, GL objects included, so a sweep over many compositions runs in bounded memory.
 class ShaderCompositor
 {
 public:
@@ -66,17 +53,22 @@ public:
     /// Rewrites "N:line" references of a GLSL info log into "file:line".
     static std::string explainLog(const std::string& log, const ComposedProgram& program);
 
-    /// Number of programs built so far (one per distinct composition).
+    /// Number of programs held (in use or among the recently used).
     std::size_t programCount() const;
+    /// Unused programs kept for reuse (default 32; 0 keeps only those in use).
+    void setCacheSize(std::size_t programs);
     /// The registry implementations come from.
     const ShaderFunctionRegistry& registry() const { return _registry; }
 
 private:
     std::shared_ptr<const ComposedProgram> build(const Composition& composition) const;
+    void touch(const std::shared_ptr<const ComposedProgram>& program);
 
     const ShaderFunctionRegistry& _registry;
     mutable std::mutex _mutex;
-    std::map<std::string, std::shared_ptr<const ComposedProgram>> _cache;
+    std::map<std::string, std::weak_ptr<const ComposedProgram>> _live;
+    std::list<std::shared_ptr<const ComposedProgram>> _recent;  ///< most recent first
+    std::size_t _cacheSize = 32;
 };
 
 }  // namespace volren

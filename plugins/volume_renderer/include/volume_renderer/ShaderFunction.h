@@ -1,180 +1,100 @@
 #pragma once
-#include <osg/Matrixd>
-#include <osg/StateSet>
-#include <osg/Texture>
-#include <osg/Vec4d>
+#include <volume_renderer/BindContext.h>
 
 #include <algorithm>
 #include <functional>
-#include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace volren {
 
-class ClipNode;
-class Volume;
-class VolumeNode;
-class TransferFunction;
-struct RenderSettings;
-
 /// A uniform an implementation reads (the compositor declares it once in the program).
 struct UniformDecl
 {
-    std::string name;       ///< GLSL name, `volren_` prefixed
-    std::string glslType;   ///< "float", "vec2", "mat4", ...
-    std::string arraySize;  ///< GLSL array size expression, empty for a single value
+    std::string name = {};       ///< GLSL name, `volren_` prefixed
+    std::string glslType = {};   ///< "float", "vec2", "mat4", ...
+    std::string arraySize = {};  ///< GLSL array size expression, empty for a single value
     bool shared = false;    ///< one value per program: not renamed per template instance
 };
 
 /// A texture an implementation samples; the compositor gives each distinct name a unit.
 struct TextureDecl
 {
-    std::string name;         ///< GLSL sampler name
-    std::string samplerType;  ///< "sampler3D", "sampler1D", ...
+    std::string name = {};         ///< GLSL sampler name
+    std::string samplerType = {};  ///< "sampler3D", "sampler1D", ...
     bool shared = false;      ///< one texture per program: not renamed per template instance
 };
 
-/// Auxiliary data an implementation needs; the renderer creates only what a composition asks for.
-/// The screen-sized ones are per camera and bound by the pass itself (VolumeScene):
-/// - DepthTexture: the depth of the opaque geometry drawn before the volumes, as sampler2D
-///   `volren_depthTexture` read with texelFetch at gl_FragCoord.xy - `volren_viewportOrigin`;
-/// - EntryPoints: the volume-space points of the box's rasterised front faces, as image2D
-///   `volren_entryPoints` (rgba32f: xyz, w = `volren_frameStamp` of the frame that wrote it).
-enum class AuxData { VolumeTexture, TransferFunctionTable, PremultipliedTable, JitterTexture, DepthTexture, EntryPoints };
+/// A list of slot names.
+using SlotList = std::vector<std::string>;
 
-/// A light as the volume sees it, in the VolumeNode's local coordinates.
-struct LightInfo
+/// How a Shading implementation uses the scene's lights.
+enum class LightUse
 {
-    osg::Vec4d position;  ///< w = 0: direction towards the light; w = 1: point light position
-    osg::Vec3d colour;    ///< diffuse colour of the osg::Light
+    None,      ///< never sees a light (the composition has no lights)
+    Optional,  ///< loops over the lights when there are some (debug views)
+    Required,  ///< lit: needs at least one light and a real Illumination
 };
 
-/// A clip shape as the volume sees it.
-struct ClipInfo
+/// What the composition policy needs to know about an implementation, declared next to it in
+/// its slot's functions/<Slot>.cpp. Nothing else in the renderer names implementations.
+struct ImplementationTraits
 {
-    const ClipNode* node = nullptr;  ///< the shape
-    osg::Matrixd textureToShape;     ///< volume texture space -> the shape's local coordinates
-};
-
-/// What an implementation may read and set while binding one volume for a frame.
-struct BindContext
-{
-    const VolumeNode& node;              ///< the node being drawn
-    const Volume& volume;                ///< its volume
-    const TransferFunction& transfer;    ///< its transfer function
-    const RenderSettings& settings;      ///< its settings
-    double sampleDistance;               ///< effective step in world units
-    osg::StateSet& stateSet;             ///< per-node state of the volume's proxy geometry
-    const std::map<std::string, int>& textureUnits;  ///< sampler name -> unit, from the compositor
-    std::map<AuxData, osg::ref_ptr<osg::Texture>> aux;  ///< auxiliary textures made for this node
-    std::vector<LightInfo> lights;       ///< lights reaching the volume
-    std::vector<ClipInfo> clips;         ///< per template instance of the slot being bound
-    std::string suffix;                  ///< "_k" while binding template instance k, else ""
-    int instance = -1;                   ///< k while binding template instance k, else -1
-    std::map<std::string, std::string> chosen;  ///< slot -> implementation of this composition
-    bool writesDepth = false;            ///< the composition's traversal reports surface hits
-    /// Texture of a volume (shared per Volume); `nearest` selects nearest-voxel filtering.
-    std::function<osg::Texture*(const Volume&, bool nearest)> volumeTexture;
-    /// Size of the box the proxy draws; zero means the volume's own box (a multi-volume set's
-    /// program draws the union of its members' boxes).
-    osg::Vec3d boxSize;
-    /// "_v<k>" while binding member k of a multi-volume set, else "" (added after `suffix`).
-    std::string member;
-    /// Multi-volume sets: the set box's texture space -> this member's texture space.
-    osg::Matrixd setToMember;
-
-    /// Name of `base` for the instance being bound (adds the template and member suffixes).
-    std::string name(const std::string& base) const { return base + suffix + member; }
-    /// Runs `bind(*this)` with the template suffix off, for uniforms declared `shared` (a
-    /// multi-volume member keeps its member suffix).
-    template <typename F>
-    void unsuffixed(F bind)
-    {
-        const std::string saved = suffix;
-        suffix.clear();
-        bind(*this);
-        suffix = saved;
-    }
-    /// The clip shape of the template instance being bound.
-    const ClipInfo& clip() const;
-
-    /// Sets uniform `name` (template suffix added) to `value` on the node's state.
-    template <typename T>
-    void uniform(const std::string& base, const T& value)
-    {
-        const std::string full = name(base);
-        osg::Uniform* u = stateSet.getUniform(full);
-        if (!u) {
-            u = new osg::Uniform(full.c_str(), value);
-            stateSet.addUniform(u);
-        } else {
-            u->set(value);
-        }
-    }
-    /// Sets element `index` of uniform array `base` (of `size` elements) to `value`.
-    template <typename T>
-    void uniformElement(const std::string& base, unsigned int size, unsigned int index, const T& value)
-    {
-        const std::string full = name(base);
-        osg::Uniform* u = stateSet.getUniform(full);
-        if (!u || u->getNumElements() != size) {
-            if (u) stateSet.removeUniform(u);
-            u = new osg::Uniform(osg::Uniform::getTypeId(glslTypeOf(value)), full, int(size));
-            stateSet.addUniform(u);
-        }
-        u->setElement(index, value);
-    }
-    /// Binds `texture` to sampler `base` (template suffix added; unit from the compositor).
-    void texture(const std::string& base, osg::Texture* texture);
-
-private:
-    static std::string glslTypeOf(float) { return "float"; }
-    static std::string glslTypeOf(const osg::Vec3f&) { return "vec3"; }
-    static std::string glslTypeOf(const osg::Vec4f&) { return "vec4"; }
+    /// Slots its GLSL calls (with its includes); unset = unknown, any may be called. A slot that
+    /// no chosen implementation calls is null in every composition (it would be dead code).
+    std::optional<SlotList> calls = {};
+    /// Slots among `calls` that must be real (not null) whenever this implementation is chosen.
+    SlotList required = {};
+    /// RayTraversal: composites emission and absorption, so overlapping volumes drawn with it may
+    /// share one ray (a multi-volume set; media add).
+    bool emissionAbsorption = false;
+    /// RayTraversal: reports an opaque surface hit and writes its depth (isosurface).
+    bool writesDepth = false;
+    /// Shading: whether and how it uses the scene's lights.
+    LightUse lights = LightUse::None;
+    /// Template slots: the kind of clip one instance implements ("plane", "box", "ellipsoid",
+    /// "mask": ClipNode::clipKind(); "depth": the opaque geometry's depth). Empty: none.
+    std::string clipKind = {};
+    /// Template slots: at most one instance per composition (one depth buffer per camera).
+    bool single = false;
+    /// Part of multi-volume set programs only (the set's traversal, the per-member glue): never
+    /// chosen for a single volume, left out of ShaderFunctionRegistry::names().
+    bool multiVolume = false;
+    /// Other names users may give it in settings ("dvr" for dvr_front_to_back).
+    std::vector<std::string> aliases = {};
 };
 
 /// One implementation of a shader-function slot: a GLSL file plus what it needs.
 /// The GLSL file states its slot and signature at the top and declares no uniforms itself:
 /// the compositor emits the declarations listed here, once per program (per instance for
-/// template slots, with the instance suffix).
+/// template slots, with the instance suffix). Built with named fields:
+/// `{.slot = "Illumination", .name = "lambert", .traits = {.calls = SlotList{}}}`.
 struct ShaderFunction
 {
-    std::string slot;                   ///< slot name, e.g. "RayTraversal"
-    std::string name;                   ///< implementation name, e.g. "dvr_front_to_back"
-    std::string file;                   ///< fragment source, relative to a shader directory
-    std::string vertexFile;             ///< vertex source (RaySetup only), relative path
-    std::vector<std::string> includes;  ///< helper files emitted (once) before `file`
-    std::vector<UniformDecl> uniforms;  ///< uniforms it reads
-    std::vector<TextureDecl> textures;  ///< samplers it reads
-    std::vector<AuxData> needs;         ///< auxiliary data the renderer must create
-    std::function<void(BindContext&)> bind;  ///< sets this frame's uniform values and textures
-    bool writesDepth = false;           ///< RayTraversal: reports a surface hit (isosurface)
-    bool single = false;                ///< template slots: at most one instance per composition
-    /// Part of multi-volume set programs only (the set's traversal, the per-member glue): left
-    /// out of ShaderFunctionRegistry::names(), so single-volume compositions never pick it.
-    bool multiVolume = false;
-    /// Slots this implementation calls; empty = any. The scene analysis makes slots that no
-    /// chosen implementation calls null, so they cost nothing.
-    std::vector<std::string> calls = {};
+    std::string slot = {};                   ///< slot name, e.g. "RayTraversal"
+    std::string name = {};                   ///< implementation name, e.g. "dvr_front_to_back"
+    std::string file = {};                   ///< fragment source relative to a shader folder; empty: <slot>/<name>.glsl
+    std::string vertexFile = {};             ///< vertex source (RaySetup only), relative path
+    std::vector<std::string> includes = {};  ///< helper files emitted (once) before `file`
+    std::vector<UniformDecl> uniforms = {};  ///< uniforms it reads
+    std::vector<TextureDecl> textures = {};  ///< samplers it reads
+    std::vector<AuxData> needs = {};         ///< auxiliary data the renderer must create
+    std::function<void(BindContext&)> bind = {};  ///< sets this frame's uniform values and textures
+    ImplementationTraits traits = {};        ///< what the composition policy knows of it
 
-    /// An implementation of `slot` in `<slot>/<name>.glsl` that binds and needs nothing.
-    static ShaderFunction plain(const std::string& slot, const std::string& name)
-    {
-        ShaderFunction f;
-        f.slot = slot;
-        f.name = name;
-        f.file = slot + "/" + name + ".glsl";
-        return f;
-    }
-
-    /// Whether this implementation may call `slot`.
+    /// Whether this implementation may call `slot` (true when its calls are unknown).
     bool mayCall(const std::string& slot) const
     {
-        return calls.empty() || std::find(calls.begin(), calls.end(), slot) != calls.end();
+        return !traits.calls || std::find(traits.calls->begin(), traits.calls->end(), slot) != traits.calls->end();
     }
-    /// Whether this implementation lists `slot` among its calls (so that slot must be real).
-    bool declaresCall(const std::string& slot) const { return !calls.empty() && mayCall(slot); }
+    /// Whether `slot` must be real when this implementation is chosen.
+    bool requiresSlot(const std::string& slot) const
+    {
+        return std::find(traits.required.begin(), traits.required.end(), slot) != traits.required.end();
+    }
+    /// Whether it needs auxiliary data `aux`.
+    bool needsAux(AuxData aux) const { return std::find(needs.begin(), needs.end(), aux) != needs.end(); }
 };
 
 }  // namespace volren

@@ -27,13 +27,16 @@ public:
     /// Registers unclaimed GLSL files found in $VOLREN_SHADER_PATH; returns how many.
     std::size_t addShaderDirectoryFunctions();
 
-    /// Adds or replaces an implementation (plugins may add their own).
+    /// Adds or replaces an implementation (plugins may add their own); an empty `file` becomes
+    /// `<slot>/<name>.glsl`.
     void add(ShaderFunction function);
     /// The implementation `name` of `slot`, or null.
     const ShaderFunction* find(const std::string& slot, const std::string& name) const;
     /// Names of the implementations of `slot` that single-volume compositions may choose (the
     /// multi-volume set functions are left out).
     std::vector<std::string> names(const std::string& slot) const;
+    /// Names of every implementation of `slot`, the multi-volume set functions included.
+    std::vector<std::string> allNames(const std::string& slot) const;
 
     /// Directories searched for GLSL files, first match wins: $VOLREN_SHADER_PATH
     /// (colon-separated), then the installed shaders/ folder.
@@ -45,7 +48,7 @@ private:
     std::map<std::string, std::map<std::string, ShaderFunction>> _functions;
 };
 
-/// Registers the built-in implementations (one function per slot, in src/functions/).
+/// Registers the built-in implementations (one function and file per slot, src/functions/<Slot>.cpp).
 void registerRaySetupFunctions(ShaderFunctionRegistry& registry);
 void registerClipRayFunctions(ShaderFunctionRegistry& registry);
 void registerJitterFunctions(ShaderFunctionRegistry& registry);
@@ -55,6 +58,7 @@ void registerReconstructionFunctions(ShaderFunctionRegistry& registry);
 void registerClassificationFunctions(ShaderFunctionRegistry& registry);
 void registerShadingFunctions(ShaderFunctionRegistry& registry);
 void registerGradientFunctions(ShaderFunctionRegistry& registry);
+void registerGradientInputFunctions(ShaderFunctionRegistry& registry);
 void registerIlluminationFunctions(ShaderFunctionRegistry& registry);
 void registerShadowingFunctions(ShaderFunctionRegistry& registry);
 void registerAccelerationFunctions(ShaderFunctionRegistry& registry);

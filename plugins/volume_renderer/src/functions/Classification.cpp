@@ -7,39 +7,53 @@
 
 namespace volren {
 
+using bindings::operator+;
+
 void registerClassificationFunctions(ShaderFunctionRegistry& registry)
 {
-    ShaderFunction none{"Classification", "null", "Classification/null.glsl", "", {}, bindings::window,
-                        {}, {}, [](BindContext& c) { bindings::bindWindow(c); }, false};
-    registry.add(none);
+    const ImplementationTraits leaf{.calls = SlotList{}};
+    registry.add({.slot = "Classification",
+                  .name = "null",
+                  .uniforms = bindings::window,
+                  .bind = bindings::bindWindow,
+                  .traits = leaf});
 
-    ShaderFunction tf1d{"Classification", "tf1d", "Classification/tf1d.glsl", "", {}, bindings::window,
-                        {{"volren_transferFunction", "sampler1D"}}, {AuxData::TransferFunctionTable}, nullptr, false};
-    tf1d.bind = [](BindContext& c) {
-        bindings::bindWindow(c);
-        c.texture("volren_transferFunction", c.aux.at(AuxData::TransferFunctionTable).get());
-    };
-    registry.add(tf1d);
+    registry.add({.slot = "Classification",
+                  .name = "tf1d",
+                  .uniforms = bindings::window,
+                  .textures = {{"volren_transferFunction", "sampler1D"}},
+                  .needs = {AuxData::TransferFunctionTable},
+                  .bind =
+                      [](BindContext& c) {
+                          bindings::bindWindow(c);
+                          c.texture("volren_transferFunction", c.aux.at(AuxData::TransferFunctionTable).get());
+                      },
+                  .traits = leaf});
 
-    ShaderFunction premultiplied{"Classification", "premultiplied", "Classification/premultiplied.glsl", "", {},
-                                 bindings::window, {{"volren_premultipliedTable", "sampler1D"}},
-                                 {AuxData::PremultipliedTable}, nullptr, false};
-    premultiplied.bind = [](BindContext& c) {
-        bindings::bindWindow(c);
-        c.texture("volren_premultipliedTable", c.aux.at(AuxData::PremultipliedTable).get());
-    };
-    registry.add(premultiplied);
+    registry.add({.slot = "Classification",
+                  .name = "premultiplied",
+                  .uniforms = bindings::window,
+                  .textures = {{"volren_premultipliedTable", "sampler1D"}},
+                  .needs = {AuxData::PremultipliedTable},
+                  .bind =
+                      [](BindContext& c) {
+                          bindings::bindWindow(c);
+                          c.texture("volren_premultipliedTable", c.aux.at(AuxData::PremultipliedTable).get());
+                      },
+                  .traits = leaf});
 
-    ShaderFunction threshold = tf1d;
-    threshold.name = "threshold";
-    threshold.file = "Classification/threshold.glsl";
-    threshold.uniforms.push_back({"volren_threshold", "float", ""});
-    threshold.bind = [](BindContext& c) {
-        bindings::bindWindow(c);
-        c.uniform("volren_threshold", float(c.settings.threshold));
-        c.texture("volren_transferFunction", c.aux.at(AuxData::TransferFunctionTable).get());
-    };
-    registry.add(threshold);
+    registry.add({.slot = "Classification",
+                  .name = "threshold",
+                  .uniforms = bindings::window + std::vector<UniformDecl>{{"volren_threshold", "float", ""}},
+                  .textures = {{"volren_transferFunction", "sampler1D"}},
+                  .needs = {AuxData::TransferFunctionTable},
+                  .bind =
+                      [](BindContext& c) {
+                          bindings::bindWindow(c);
+                          c.uniform("volren_threshold", float(c.settings.threshold));
+                          c.texture("volren_transferFunction", c.aux.at(AuxData::TransferFunctionTable).get());
+                      },
+                  .traits = leaf});
 }
 
 }  // namespace volren

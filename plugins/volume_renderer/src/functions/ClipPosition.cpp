@@ -13,15 +13,22 @@ namespace {
 const UniformDecl matrix = {"volren_clipMatrix", "mat4", ""};
 const UniformDecl invert = {"volren_clipInvert", "bool", ""};
 
+/// The traits of the implementation for clip shapes of `kind` (ClipNode::clipKind()).
+ImplementationTraits clipping(const std::string& kind)
+{
+    return {.calls = SlotList{}, .clipKind = kind};
+}
+
 }  // namespace
 
 void registerClipPositionFunctions(ShaderFunctionRegistry& registry)
 {
-    registry.add(ShaderFunction::plain("ClipPosition", "null"));
+    registry.add({.slot = "ClipPosition", .name = "null", .traits = {.calls = SlotList{}}});
 
-    ShaderFunction box{"ClipPosition", "box", "ClipPosition/box.glsl", "", {},
-                       {matrix, invert, {"volren_clipBoxMin", "vec3", ""}, {"volren_clipBoxMax", "vec3", ""}},
-                       {}, {}, nullptr, false};
+    ShaderFunction box{.slot = "ClipPosition",
+                       .name = "box",
+                       .uniforms = {matrix, invert, {"volren_clipBoxMin", "vec3", ""}, {"volren_clipBoxMax", "vec3", ""}},
+                       .traits = clipping("box")};
     box.bind = [](BindContext& c) {
         const auto* node = dynamic_cast<const ClipBoxNode*>(c.clip().node);
         if (!node) return;
@@ -32,9 +39,11 @@ void registerClipPositionFunctions(ShaderFunctionRegistry& registry)
     };
     registry.add(box);
 
-    ShaderFunction ellipsoid{"ClipPosition", "ellipsoid", "ClipPosition/ellipsoid.glsl", "", {},
-                             {matrix, invert, {"volren_clipCentre", "vec3", ""}, {"volren_clipRadii", "vec3", ""}},
-                             {}, {}, nullptr, false};
+    ShaderFunction ellipsoid{
+        .slot = "ClipPosition",
+        .name = "ellipsoid",
+        .uniforms = {matrix, invert, {"volren_clipCentre", "vec3", ""}, {"volren_clipRadii", "vec3", ""}},
+        .traits = clipping("ellipsoid")};
     ellipsoid.bind = [](BindContext& c) {
         const auto* node = dynamic_cast<const ClipEllipsoidNode*>(c.clip().node);
         if (!node) return;
@@ -45,8 +54,10 @@ void registerClipPositionFunctions(ShaderFunctionRegistry& registry)
     };
     registry.add(ellipsoid);
 
-    ShaderFunction plane{"ClipPosition", "plane", "ClipPosition/plane.glsl", "", {},
-                         {invert, {"volren_clipPlane", "vec4", ""}}, {}, {}, nullptr, false};
+    ShaderFunction plane{.slot = "ClipPosition",
+                         .name = "plane",
+                         .uniforms = {invert, {"volren_clipPlane", "vec4", ""}},
+                         .traits = clipping("plane")};
     plane.bind = [](BindContext& c) {
         const auto* node = dynamic_cast<const ClipPlaneNode*>(c.clip().node);
         if (!node) return;
@@ -57,9 +68,12 @@ void registerClipPositionFunctions(ShaderFunctionRegistry& registry)
     };
     registry.add(plane);
 
-    ShaderFunction mask{"ClipPosition", "mask", "ClipPosition/mask.glsl", "", {},
-                        {matrix, invert, {"volren_clipThreshold", "float", ""}, {"volren_clipMaskValue", "vec2", ""}},
-                        {{"volren_clipMask", "sampler3D"}}, {}, nullptr, false};
+    ShaderFunction mask{
+        .slot = "ClipPosition",
+        .name = "mask",
+        .uniforms = {matrix, invert, {"volren_clipThreshold", "float", ""}, {"volren_clipMaskValue", "vec2", ""}},
+        .textures = {{"volren_clipMask", "sampler3D"}},
+        .traits = clipping("mask")};
     mask.bind = [](BindContext& c) {
         const auto* node = dynamic_cast<const ClipMaskNode*>(c.clip().node);
         if (!node || !node->mask) return;

@@ -1,4 +1,4 @@
-// Gradient and GradientInput implementations.
+// Gradient implementations (of the chosen GradientInput).
 #include "CommonBindings.h"
 
 #include <volume_renderer/ShaderFunctionRegistry.h>
@@ -7,14 +7,15 @@ namespace volren {
 
 void registerGradientFunctions(ShaderFunctionRegistry& registry)
 {
-    registry.add(ShaderFunction::plain("Gradient", "null"));
+    registry.add({.slot = "Gradient", .name = "null", .traits = {.calls = SlotList{}}});
     for (const char* name : {"forward", "backward", "central", "central9"})
-        registry.add({"Gradient", name, std::string("Gradient/") + name + ".glsl", "", {}, bindings::geometry, {}, {},
-                      [](BindContext& c) { bindings::bindGeometry(c); }, false});
-
-    for (const char* name : {"null", "scalar", "alpha"})
-        registry.add({"GradientInput", name, std::string("GradientInput/") + name + ".glsl", "", {}, {}, {}, {},
-                      nullptr, false});
+        registry.add({.slot = "Gradient",
+                      .name = name,
+                      .uniforms = bindings::geometry,
+                      .bind = bindings::bindGeometry,
+                      .traits = {.calls = SlotList{"GradientInput"},
+                                 .required = {"GradientInput"},
+                                 .aliases = name == std::string("central9") ? SlotList{"central-9"} : SlotList{}}});
 }
 
 }  // namespace volren

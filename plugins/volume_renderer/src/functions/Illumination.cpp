@@ -7,32 +7,26 @@ namespace volren {
 
 void registerIlluminationFunctions(ShaderFunctionRegistry& registry)
 {
-    registry.add(ShaderFunction::plain("Illumination", "null"));
-    registry.add(ShaderFunction::plain("Illumination", "lambert"));
-    registry.add({"Illumination", "blinn_phong", "Illumination/blinn_phong.glsl", "", {},
-                  {{"volren_specular", "float", ""}, {"volren_shininess", "float", ""}}, {}, {},
-                  [](BindContext& c) {
-                      c.uniform("volren_specular", float(c.settings.specular));
-                      c.uniform("volren_shininess", float(c.settings.shininess));
-                  },
-                  false});
-    registry.add({"Illumination", "cook_torrance", "Illumination/cook_torrance.glsl", "", {},
-                  {{"volren_specular", "float", ""}, {"volren_roughness", "float", ""}}, {}, {},
-                  [](BindContext& c) {
-                      c.uniform("volren_specular", float(c.settings.specular));
-                      c.uniform("volren_roughness", float(c.settings.roughness));
-                  },
-                  false});
-}
-
-void registerShadowingFunctions(ShaderFunctionRegistry& registry)
-{
-    registry.add(ShaderFunction::plain("Shadowing", "null"));
-}
-
-void registerAccelerationFunctions(ShaderFunctionRegistry& registry)
-{
-    registry.add(ShaderFunction::plain("Acceleration", "null"));
+    registry.add({.slot = "Illumination", .name = "null", .traits = {.calls = SlotList{}}});
+    registry.add({.slot = "Illumination", .name = "lambert", .traits = {.calls = SlotList{}}});
+    registry.add({.slot = "Illumination",
+                  .name = "blinn_phong",
+                  .uniforms = {{"volren_specular", "float", ""}, {"volren_shininess", "float", ""}},
+                  .bind =
+                      [](BindContext& c) {
+                          c.uniform("volren_specular", float(c.settings.specular));
+                          c.uniform("volren_shininess", float(c.settings.shininess));
+                      },
+                  .traits = {.calls = SlotList{}, .aliases = {"blinnphong", "blinn-phong", "phong"}}});
+    registry.add({.slot = "Illumination",
+                  .name = "cook_torrance",
+                  .uniforms = {{"volren_specular", "float", ""}, {"volren_roughness", "float", ""}},
+                  .bind =
+                      [](BindContext& c) {
+                          c.uniform("volren_specular", float(c.settings.specular));
+                          c.uniform("volren_roughness", float(c.settings.roughness));
+                      },
+                  .traits = {.calls = SlotList{}, .aliases = {"cooktorrance", "cook-torrance"}}});
 }
 
 }  // namespace volren

@@ -36,17 +36,15 @@ osg::Texture2D* jitterTile()
 
 void registerJitterFunctions(ShaderFunctionRegistry& registry)
 {
-    registry.add(ShaderFunction::plain("Jitter", "null"));
-    registry.add(ShaderFunction::plain("Jitter", "hash"));
-
-    ShaderFunction texture;
-    texture.slot = "Jitter";
-    texture.name = "texture";
-    texture.file = "Jitter/texture.glsl";
-    texture.textures = {{"volren_jitterTexture", "sampler2D"}};
-    texture.needs = {AuxData::JitterTexture};
-    texture.bind = [](BindContext& c) { c.texture("volren_jitterTexture", jitterTile()); };
-    registry.add(texture);
+    const ImplementationTraits leaf{.calls = SlotList{}};
+    registry.add({.slot = "Jitter", .name = "null", .traits = leaf});
+    registry.add({.slot = "Jitter", .name = "hash", .traits = leaf});
+    registry.add({.slot = "Jitter",
+                  .name = "texture",
+                  .textures = {{"volren_jitterTexture", "sampler2D"}},
+                  .needs = {AuxData::JitterTexture},
+                  .bind = [](BindContext& c) { c.texture("volren_jitterTexture", jitterTile()); },
+                  .traits = leaf});
 }
 
 }  // namespace volren

@@ -5,42 +5,44 @@
 
 namespace volren {
 
+namespace {
+
+/// What every ray setup shares: the box's vertex stage, the common ray tail, the geometry.
+ShaderFunction raySetup(const std::string& name)
+{
+    return {.slot = "RaySetup",
+            .name = name,
+            .vertexFile = "RaySetup/box.vert",
+            .includes = {"RaySetup/ray.glsl"},
+            .uniforms = {{"volren_writesDepth", "bool", ""}},
+            .bind =
+                [](BindContext& c) {
+                    bindings::bindGeometry(c);  // the vertex stage reads volren_worldSize
+                    c.uniform("volren_writesDepth", c.writesDepth);
+                },
+            .traits = {.calls = SlotList{"ClipRay", "Jitter", "RayTraversal"}}};
+}
+
+}  // namespace
+
 void registerRaySetupFunctions(ShaderFunctionRegistry& registry)
 {
-    ShaderFunction box;
-    box.slot = "RaySetup";
-    box.name = "box_intersection";
-    box.file = "RaySetup/box_intersection.glsl";
-    box.vertexFile = "RaySetup/box.vert";
-    box.includes = {"RaySetup/ray.glsl"};
-    box.uniforms = {{"volren_writesDepth", "bool", ""}};
-    box.bind = [](BindContext& c) {
-        bindings::bindGeometry(c);  // the vertex stage reads volren_worldSize
-        c.uniform("volren_writesDepth", c.writesDepth);
-    };
-    registry.add(box);
-
-    ShaderFunction hybrid = box;
-    hybrid.name = "hybrid";
-    hybrid.file = "RaySetup/hybrid.glsl";
-    registry.add(hybrid);
+    registry.add(raySetup("box_intersection"));
+    registry.add(raySetup("hybrid"));
 
     // Entry points come from a front-face pass the VolumeScene draws into a per-camera image
     // (AuxData::EntryPoints), which also sets volren_viewportOrigin and volren_frameStamp.
-    ShaderFunction rasterised = box;
-    rasterised.name = "rasterised";
-    rasterised.file = "RaySetup/rasterised.glsl";
+    ShaderFunction rasterised = raySetup("rasterised");
     rasterised.uniforms.push_back({"volren_viewportOrigin", "vec2", ""});
     rasterised.uniforms.push_back({"volren_frameStamp", "float", ""});
     rasterised.needs = {AuxData::EntryPoints};
     registry.add(rasterised);
 
-    ShaderFunction none = box;
-    none.name = "null";
-    none.file = "RaySetup/null.glsl";
-    none.includes.clear();
-    none.uniforms.clear();
-    registry.add(none);
+    registry.add({.slot = "RaySetup",
+                  .name = "null",
+                  .vertexFile = "RaySetup/box.vert",
+                  .bind = raySetup("null").bind,
+                  .traits = {.calls = SlotList{}}});
 }
 
 }  // namespace volren

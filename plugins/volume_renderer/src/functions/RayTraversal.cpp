@@ -1,4 +1,4 @@
-// RayTraversal implementations.
+// RayTraversal implementations, and the multi-volume set's traversal.
 #include "CommonBindings.h"
 
 #include <volume_renderer/ShaderFunctionRegistry.h>
@@ -20,15 +20,19 @@ const std::vector<UniformDecl> marching = {{"volren_sampleDistance", "float", ""
                                            {"volren_terminationDepth", "float", ""},
                                            {"volren_terminationOpacity", "float", ""}};
 
+/// Optical depth at which marching stops: opacity A reached <=> -log(1-A); A = 1 never stops.
+float terminationDepth(double threshold)
+{
+    return float(threshold >= 1.0 ? 1e30 : -std::log1p(-threshold));
+}
+
 void bindMarching(BindContext& c)
 {
     bindings::bindGeometry(c);
     c.uniform("volren_sampleDistance", float(c.sampleDistance));
     c.uniform("volren_referenceStep", float(c.volume.minSpacing()));
-    // Opacity A reached <=> optical depth -log(1-A) reached; A = 1 never terminates early.
-    const double threshold = c.settings.earlyTerminationThreshold;
-    c.uniform("volren_terminationDepth", float(threshold >= 1.0 ? 1e30 : -std::log1p(-threshold)));
-    c.uniform("volren_terminationOpacity", float(threshold));
+    c.uniform("volren_terminationDepth", terminationDepth(c.settings.earlyTerminationThreshold));
+    c.uniform("volren_terminationOpacity", float(c.settings.earlyTerminationThreshold));
 }
 
 /// Data value of the isosurface: the setting, else the first TF value with any opacity.
@@ -42,43 +46,46 @@ double isoValueOf(const BindContext& c)
     return hi;
 }
 
-ShaderFunction traversal(const std::string& name, std::vector<UniformDecl> extra = {})
+/// A marching traversal in RayTraversal/<name>.glsl that calls `calls`.
+ShaderFunction traversal(const std::string& name, SlotList calls, std::vector<UniformDecl> extra = {})
 {
-    ShaderFunction f;
-    f.calls = {"Reconstruction", "Classification", "ClipPosition", "Shading", "Acceleration"};
-    f.slot = "RayTraversal";
-    f.name = name;
-    f.file = "RayTraversal/" + name + ".glsl";
-    f.includes = {"RayTraversal/march.glsl"};
-    f.uniforms = bindings::geometry + marching + extra;
-    f.bind = [](BindContext& c) { bindMarching(c); };
-    return f;
+    return {.slot = "RayTraversal",
+            .name = name,
+            .includes = {"RayTraversal/march.glsl"},
+            .uniforms = bindings::geometry + marching + extra,
+            .bind = bindMarching,
+            .traits = {.calls = std::move(calls)}};
 }
+
+const SlotList compositing = {"Reconstruction", "Classification", "ClipPosition", "Shading"};
+const SlotList projecting = {"Reconstruction", "Classification", "ClipPosition"};
 
 }  // namespace
 
 void registerRayTraversalFunctions(ShaderFunctionRegistry& registry)
 {
-    ShaderFunction none{"RayTraversal", "null", "RayTraversal/null.glsl", "", {}, {}, {}, {}, nullptr, false, {}};
-    none.calls = {"RayTraversal"};  // calls nothing else (a slot list may not be empty)
-    registry.add(none);
-    registry.add(traversal("dvr_front_to_back"));
-    registry.add(traversal("dvr_back_to_front"));
-    for (const char* name : {"mip", "minip", "average"}) {  // projections: they never shade
-        ShaderFunction f = traversal(name);
-        f.calls = {"Reconstruction", "Classification", "ClipPosition"};
-        registry.add(f);
-    }
+    registry.add({.slot = "RayTraversal", .name = "null", .traits = {.calls = SlotList{}}});
 
-    ShaderFunction mida = traversal("mida", bindings::window);
+    ShaderFunction frontToBack = traversal("dvr_front_to_back", {"Reconstruction", "Classification", "ClipPosition", "Shading", "Acceleration"});
+    frontToBack.traits.emissionAbsorption = true;
+    frontToBack.traits.aliases = {"dvr"};
+    registry.add(frontToBack);
+    ShaderFunction backToFront = traversal("dvr_back_to_front", compositing);
+    backToFront.traits.emissionAbsorption = true;
+    registry.add(backToFront);
+
+    for (const char* name : {"mip", "minip", "average"}) registry.add(traversal(name, projecting));  // never shade
+
+    ShaderFunction mida = traversal("mida", compositing, bindings::window);
     mida.bind = [](BindContext& c) {
         bindMarching(c);
         bindings::bindWindow(c);
     };
     registry.add(mida);
 
-    ShaderFunction gmip = traversal("gmip", bindings::window + std::vector<UniformDecl>{bindings::gradientScale});
-    gmip.calls = {"Gradient", "Classification", "ClipPosition"};
+    ShaderFunction gmip = traversal("gmip", {"Gradient", "Classification", "ClipPosition"},
+                                    bindings::window + std::vector<UniformDecl>{bindings::gradientScale});
+    gmip.traits.required = {"Gradient"};
     gmip.bind = [](BindContext& c) {
         bindMarching(c);
         bindings::bindWindow(c);
@@ -86,14 +93,31 @@ void registerRayTraversalFunctions(ShaderFunctionRegistry& registry)
     };
     registry.add(gmip);
 
-    ShaderFunction iso = traversal("isosurface", {{"volren_isoTexel", "float", ""}});
-    iso.writesDepth = true;
+    ShaderFunction iso = traversal("isosurface", compositing, {{"volren_isoTexel", "float", ""}});
+    iso.traits.writesDepth = true;
     iso.bind = [](BindContext& c) {
         bindMarching(c);
         const double stored = (isoValueOf(c) - c.volume.rescaleIntercept()) / c.volume.rescaleSlope();
         c.uniform("volren_isoTexel", float(stored / normalisedScale(c.volume.type())));
     };
     registry.add(iso);
+
+    // A multi-volume set's traversal: bound once for the set, with the set's box, the finest
+    // member step (BindContext::sampleDistance) and the strictest member's early termination;
+    // the members' samples come from their MultiVolume/member glue.
+    registry.add({.slot = "RayTraversal",
+                  .name = "sum_of_media",
+                  .file = "MultiVolume/sum_of_media.glsl",
+                  .includes = {"RayTraversal/march.glsl"},
+                  .uniforms = bindings::geometry + std::vector<UniformDecl>{{"volren_sampleDistance", "float", ""},
+                                                                           {"volren_terminationDepth", "float", ""}},
+                  .bind =
+                      [](BindContext& c) {
+                          bindings::bindGeometry(c);
+                          c.uniform("volren_sampleDistance", float(c.sampleDistance));
+                          c.uniform("volren_terminationDepth", terminationDepth(c.settings.earlyTerminationThreshold));
+                      },
+                  .traits = {.calls = SlotList{}, .emissionAbsorption = true, .multiVolume = true}});
 }
 
 }  // namespace volren

@@ -7,21 +7,19 @@ namespace volren {
 
 void registerReconstructionFunctions(ShaderFunctionRegistry& registry)
 {
-    registry.add(ShaderFunction::plain("Reconstruction", "null"));
-    for (const char* name : {"nearest", "trilinear", "tricubic"}) {
-        ShaderFunction f;
-        f.slot = "Reconstruction";
-        f.name = name;
-        f.file = std::string("Reconstruction/") + name + ".glsl";
-        f.uniforms = bindings::geometry;
-        f.textures = {bindings::volumeTexture};
-        f.needs = {AuxData::VolumeTexture};
-        f.bind = [](BindContext& c) {
-            bindings::bindGeometry(c);
-            bindings::bindVolumeTexture(c);
-        };
-        registry.add(f);
-    }
+    registry.add({.slot = "Reconstruction", .name = "null", .traits = {.calls = SlotList{}}});
+    for (const char* name : {"nearest", "trilinear", "tricubic"})
+        registry.add({.slot = "Reconstruction",
+                      .name = name,
+                      .uniforms = bindings::geometry,
+                      .textures = {bindings::volumeTexture},
+                      .needs = {AuxData::VolumeTexture},
+                      .bind =
+                          [](BindContext& c) {
+                              bindings::bindGeometry(c);
+                              bindings::bindVolumeTexture(c);
+                          },
+                      .traits = {.calls = SlotList{}}});
 }
 
 }  // namespace volren

@@ -8,25 +8,34 @@
 namespace volren {
 
 namespace {
+
 using bindings::operator+;
+
+/// A shading lit by the scene's lights through the chosen Illumination (Shading/lights.glsl).
+ShaderFunction lit(const std::string& name, std::vector<UniformDecl> extra = {})
+{
+    return {.slot = "Shading",
+            .name = name,
+            .includes = {"Shading/lights.glsl"},
+            .uniforms = bindings::geometry + bindings::lights + extra,
+            .bind =
+                [](BindContext& c) {
+                    bindings::bindGeometry(c);
+                    bindings::bindLights(c);
+                },
+            .traits = {.calls = SlotList{"Gradient", "Illumination", "Shadowing"},
+                       .required = {"Illumination"},
+                       .lights = LightUse::Required}};
 }
+
+}  // namespace
 
 void registerShadingFunctions(ShaderFunctionRegistry& registry)
 {
-    registry.add(ShaderFunction::plain("Shading", "null"));
+    registry.add({.slot = "Shading", .name = "null", .traits = {.calls = SlotList{}}});
+    registry.add(lit("lighting"));
 
-    ShaderFunction lighting{"Shading", "lighting", "Shading/lighting.glsl", "", {"Shading/lights.glsl"},
-                            bindings::geometry + bindings::lights, {}, {}, nullptr, false};
-    lighting.bind = [](BindContext& c) {
-        bindings::bindGeometry(c);
-        bindings::bindLights(c);
-    };
-    registry.add(lighting);
-
-    ShaderFunction threshold = lighting;
-    threshold.name = "lighting_threshold";
-    threshold.file = "Shading/lighting_threshold.glsl";
-    threshold.uniforms.push_back({"volren_shadingThreshold", "float", ""});
+    ShaderFunction threshold = lit("lighting_threshold", {{"volren_shadingThreshold", "float", ""}});
     threshold.bind = [](BindContext& c) {
         bindings::bindGeometry(c);
         bindings::bindLights(c);
@@ -34,17 +43,18 @@ void registerShadingFunctions(ShaderFunctionRegistry& registry)
     };
     registry.add(threshold);
 
-    ShaderFunction debug{"Shading", "debug", "Shading/debug.glsl", "", {},
-                         bindings::geometry + bindings::lights +
-                             std::vector<UniformDecl>{{"volren_debugView", "int", ""}, bindings::gradientScale},
-                         {}, {}, nullptr, false};
-    debug.bind = [](BindContext& c) {
-        bindings::bindGeometry(c);
-        bindings::bindLights(c);
-        bindings::bindGradientScale(c);
-        c.uniform("volren_debugView", c.settings.debugView);
-    };
-    registry.add(debug);
+    registry.add({.slot = "Shading",
+                  .name = "debug",
+                  .uniforms = bindings::geometry + bindings::lights +
+                              std::vector<UniformDecl>{{"volren_debugView", "int", ""}, bindings::gradientScale},
+                  .bind =
+                      [](BindContext& c) {
+                          bindings::bindGeometry(c);
+                          bindings::bindLights(c);
+                          bindings::bindGradientScale(c);
+                          c.uniform("volren_debugView", c.settings.debugView);
+                      },
+                  .traits = {.calls = SlotList{"Gradient", "Reconstruction"}, .lights = LightUse::Optional}});
 }
 
 }  // namespace volren

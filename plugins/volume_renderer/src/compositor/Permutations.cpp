@@ -48,50 +48,29 @@ std::vector<std::string> parseList(const std::string& text)
 
 }  // namespace
 
-bool PermutationSpace::isValid(const Composition& c)
-{
-    const std::string setup = c.functionFor("RaySetup"), traversal = c.functionFor("RayTraversal");
-    const std::string shading = c.functionFor("Shading"), illumination = c.functionFor("Illumination");
-    const std::string gradient = c.functionFor("Gradient"), input = c.functionFor("GradientInput");
-    if (setup == "null" || traversal == "null") {  // nothing marches: everything else null
-        Composition bare;
-        for (const SlotInfo& s : slots())
-            if (!s.isTemplate) bare.choice[s.name] = "null";
-        bare.choice["RaySetup"] = setup;
-        return c.key() == bare.key();
-    }
-    if ((gradient == "null") != (input == "null")) return false;
-    for (const auto& [slot, names] : c.instances)  // implementations that exist once per scene
-        for (const std::string& name : names) {
-            const ShaderFunction* f = ShaderFunctionRegistry::instance().find(slot, name);
-            if (f && f->single && std::count(names.begin(), names.end(), name) > 1) return false;
-        }
-    if (c.functionFor("Shadowing") != "null" || c.functionFor("Acceleration") != "null") return false;
-    const bool lit = shading == "lighting" || shading == "lighting_threshold";
-    if (lit && (illumination == "null" || c.lightCount == 0)) return false;
-    if (shading == "null" && (illumination != "null" || c.lightCount != 0)) return false;
-    if (shading == "debug" && illumination != "null") return false;
-    // What the traversal calls decides what may be non-null (ShaderFunction::calls).
-    const ShaderFunction* marcher = ShaderFunctionRegistry::instance().find("RayTraversal", traversal);
-    const bool shades = !marcher || marcher->mayCall("Shading");
-    const bool readsGradient = marcher && marcher->declaresCall("Gradient");
-    if (!shades && (shading != "null" || illumination != "null" || c.lightCount != 0)) return false;
-    if (readsGradient && gradient == "null") return false;
-    return gradient == "null" || shading != "null" || readsGradient;
-}
-
 PermutationSpace::PermutationSpace(const ShaderFunctionRegistry& registry, unsigned int maxInstances,
                                    unsigned int maxLights)
+    : _policy(registry)
 {
+    // Each factor's values as text and as the implementations they name.
+    std::vector<std::vector<std::vector<const ShaderFunction*>>> functions;
     for (const SlotInfo& s : slots()) {
         Factor f{s.name, {}};
+        std::vector<std::vector<std::string>> lists;
         if (s.isTemplate) {
             std::vector<std::string> kinds;
             for (const std::string& name : registry.names(s.name))
-                if (name != "null") kinds.push_back(name);
-            for (const auto& list : multisets(kinds, maxInstances)) f.values.push_back(listText(list));
+                if (name != "null") kinds.push_back(name);  // no instance is the null one
+            lists = multisets(kinds, maxInstances);
+            for (const auto& list : lists) f.values.push_back(listText(list));
         } else {
-            f.values = registry.names(s.name);
+            f.values = registry.names(s.name);  // in name order: the space's indices stay put
+            for (const std::string& name : f.values) lists.push_back({name});
+        }
+        auto& resolved = functions.emplace_back();
+        for (const auto& list : lists) {
+            auto& implementations = resolved.emplace_back();
+            for (const std::string& name : list) implementations.push_back(registry.find(s.name, name));
         }
         _factors.push_back(f);
     }
@@ -101,8 +80,10 @@ PermutationSpace::PermutationSpace(const ShaderFunctionRegistry& registry, unsig
 
     // Odometer over all factors; keep the valid ones.
     std::vector<std::uint8_t> choice(_factors.size(), 0);
+    SlotFunctions chosen(functions.size());
     while (true) {
-        if (isValid(compose(choice))) _valid.push_back(choice);
+        for (std::size_t i = 0; i < functions.size(); ++i) chosen[i] = functions[i][choice[i]];
+        if (_policy.isValid(chosen, unsigned(choice.back()))) _valid.push_back(choice);
         std::size_t i = 0;
         while (i < choice.size() && ++choice[i] == _factors[i].values.size()) choice[i++] = 0;
         if (i == choice.size()) break;

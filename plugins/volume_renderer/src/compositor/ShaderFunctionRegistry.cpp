@@ -1,8 +1,6 @@
 #include <volume_renderer/ShaderFunctionRegistry.h>
 #include <volume_renderer/Slots.h>
 
-#include <volume_model/ClipNode.h>
-
 #include <volume_model/ReadVolume.h>
 
 #include <osgDB/FileNameUtils>
@@ -40,6 +38,7 @@ void ShaderFunctionRegistry::addBuiltins()
     registerClassificationFunctions(*this);
     registerShadingFunctions(*this);
     registerGradientFunctions(*this);
+    registerGradientInputFunctions(*this);
     registerIlluminationFunctions(*this);
     registerShadowingFunctions(*this);
     registerAccelerationFunctions(*this);
@@ -111,6 +110,7 @@ std::size_t ShaderFunctionRegistry::addShaderDirectoryFunctions()
 
 void ShaderFunctionRegistry::add(ShaderFunction function)
 {
+    if (function.file.empty()) function.file = function.slot + "/" + function.name + ".glsl";
     const std::string slot = function.slot, name = function.name;
     _functions[slot][name] = std::move(function);
 }
@@ -128,7 +128,15 @@ std::vector<std::string> ShaderFunctionRegistry::names(const std::string& slot) 
     std::vector<std::string> out;
     if (auto s = _functions.find(slot); s != _functions.end())
         for (const auto& entry : s->second)
-            if (!entry.second.multiVolume) out.push_back(entry.first);
+            if (!entry.second.traits.multiVolume) out.push_back(entry.first);
+    return out;
+}
+
+std::vector<std::string> ShaderFunctionRegistry::allNames(const std::string& slot) const
+{
+    std::vector<std::string> out;
+    if (auto s = _functions.find(slot); s != _functions.end())
+        for (const auto& entry : s->second) out.push_back(entry.first);
     return out;
 }
 
@@ -149,21 +157,6 @@ std::string ShaderFunctionRegistry::locate(const std::string& relative) const
     }
     throw std::runtime_error("shader file '" + relative + "' not found (searched: " + searched +
                              "; set VOLREN_SHADER_PATH or VOLREN_SHARE_DIR)");
-}
-
-const ClipInfo& BindContext::clip() const
-{
-    static const ClipInfo none;
-    return instance >= 0 && std::size_t(instance) < clips.size() ? clips[std::size_t(instance)] : none;
-}
-
-void BindContext::texture(const std::string& base, osg::Texture* tex)
-{
-    auto unit = textureUnits.find(name(base));
-    if (unit == textureUnits.end() || !tex) return;  // not used by this composition
-    // Attribute only: shaders sample it; fixed-function texture modes are invalid in core profiles.
-    stateSet.setTextureAttribute(unit->second, tex, osg::StateAttribute::ON);
-    uniform(base, unit->second);
 }
 
 }  // namespace volren

@@ -1,5 +1,5 @@
 // volren::VolumeScene: the pass settings (`lighting`, `forceNullAll`), written as key/value
-// pairs through VolumeScene::keys()/get()/set() so new pass settings are saved without
+// pairs through PassSettings::keys()/get()/set() so new pass settings are saved without
 // touching this file. Children come from the osg::Group wrapper. `forcedComposition` is a
 // testing hook (permutation sweeps) and is not saved.
 #include "StreamFields.h"
@@ -17,12 +17,12 @@ bool checkPassSettings(const VolumeScene&) { return true; }
 
 bool writePassSettings(osgDB::OutputStream& os, const VolumeScene& scene)
 {
-    const auto keys = VolumeScene::keys();
+    const auto keys = volren::PassSettings::keys();
     writeInt(os, std::int64_t(keys.size()));
     os << os.BEGIN_BRACKET << std::endl;
     for (const auto& entry : keys) {
         os << entry.first;  // an identifier: a bare word
-        writeString(os, scene.get(entry.first));
+        writeString(os, scene.pass.get(entry.first));
         os << std::endl;
     }
     os << os.END_BRACKET << std::endl;
@@ -38,7 +38,7 @@ bool readPassSettings(osgDB::InputStream& is, VolumeScene& scene)
     for (std::int64_t n = 0; n < count; ++n) {
         std::string key, value, error;
         if (!readString(is, key, field) || !readString(is, value, field + " " + key)) return false;
-        if (!scene.set(key, value, error)) return fail(is, field + ": " + error), false;
+        if (!scene.pass.set(key, value, error)) return fail(is, field + ": " + error), false;
     }
     is >> is.END_BRACKET;
     return !is.getException();

@@ -153,8 +153,8 @@ TestScene makeScene(const std::string& dir)
 
     s.root = new VolumeScene;
     std::string error;
-    EXPECT_TRUE(s.root->set("lighting", "off", error)) << error;
-    EXPECT_TRUE(s.root->set("forceNullAll", "Jitter,Shadowing", error)) << error;
+    EXPECT_TRUE(s.root->pass.set("lighting", "off", error)) << error;
+    EXPECT_TRUE(s.root->pass.set("forceNullAll", "Jitter,Shadowing", error)) << error;
     s.root->setName("root");
 
     osg::ref_ptr<TransferFunction> sharedTf = rampTransferFunction();
@@ -271,8 +271,8 @@ void expectSameNode(const osg::Node& a, const osg::Node& b)
     }
     if (auto* sa = dynamic_cast<const VolumeScene*>(&a)) {
         auto& sb = dynamic_cast<const VolumeScene&>(b);
-        EXPECT_EQ(sa->lighting, sb.lighting);
-        EXPECT_EQ(sa->forceNull, sb.forceNull);
+        EXPECT_EQ(sa->pass.lighting, sb.pass.lighting);
+        EXPECT_EQ(sa->pass.forceNull, sb.pass.forceNull);
     }
     if (auto* ta = dynamic_cast<const osg::MatrixTransform*>(&a)) {
         EXPECT_EQ(ta->getMatrix(), dynamic_cast<const osg::MatrixTransform&>(b).getMatrix());
@@ -413,7 +413,7 @@ TEST(SceneFile, SettingsSerializerCoversEveryRenderSettingsKey)
     // survive the round trip.
     const std::string dir = tempDirectory();
     const std::vector<std::string> candidates = {"0.123456789012345", "0.987654321098765", "3.14159265358979",
-                                                 "7", "null", "scalar", "Gradient", "on", "off"};
+                                                 "null", "7", "scalar", "Gradient", "on", "off"};
     for (const auto& [key, what] : RenderSettings::keys()) {
         osg::ref_ptr<VolumeNode> node = new VolumeNode;
         std::string error;
@@ -496,7 +496,7 @@ TEST_F(SceneFileBad, WrongValueTypesFailNamingTheField)
         {"Spacing ", "Spacing banana ", "volren::Volume Spacing: expected a number, got 'banana'"},
         {"Invert TRUE", "Invert maybe", "volren::ClipNode Invert: expected TRUE or FALSE, got 'maybe'"},
         {"Threshold 0.2", "Threshold 1e999", "volren::ClipMaskNode Threshold: expected a number"},
-        {"\"mip\"", "\"m-i-p\"", "traversal must name an implementation"},
+        {"\"mip\"", "\"m-i-p\"", "slot RayTraversal has no implementation 'm-i-p'"},
         {"ambient \"0.3\"", "ambient \"3\"", "ambient must be a number in [0, 1]"},
         {"ambient \"0.3\"", "brightness \"3\"", "unknown setting 'brightness'"},
         {"lighting \"off\"", "lighting \"dim\"", "lighting must be on or off"},

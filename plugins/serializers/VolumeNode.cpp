@@ -2,13 +2,16 @@
 // Name, node mask, state set and callbacks come from the osg::Node wrapper.
 //
 // Settings are written as `key "value"` pairs under the names of `volren render --set` and read
-// back through RenderSettings::set(): every key RenderSettings::keys() lists is written, so a
+// back through volren::applyNodeSetting (RenderSettings::set, implementation names checked
+// against the renderer's registry): every key RenderSettings::keys() lists is written, so a
 // new setting is saved without touching this file, and a file's values get the model's own
 // validation and error messages. Exceptions, because get() is made for people, not files:
 // numbers are written at full precision from the fields themselves (get() rounds to 6 digits),
 // `samplerate` is skipped (an alias of sampleFactor), and slot keys write the chosen
 // implementation itself (get() reports a forced slot as "null (forced)").
 #include "StreamFields.h"
+
+#include <volume_renderer/SceneSettings.h>
 
 #include <volume_model/VolumeNode.h>
 
@@ -58,14 +61,6 @@ std::vector<std::pair<std::string, std::string>> settingPairs(const RenderSettin
         if (!value.empty()) pairs.emplace_back(key, value);
     }
     return pairs;
-}
-
-bool validImplementationName(const std::string& name)
-{
-    if (name.empty()) return false;
-    for (char c : name)
-        if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_')) return false;
-    return true;
 }
 
 // --- Volume and TransferFunction: nested objects, shared by unique id -----------------
@@ -127,15 +122,14 @@ bool readSettings(osgDB::InputStream& is, VolumeNode& node)
     if (!readInt(is, count, 0, 10000, field)) return false;
     is >> is.BEGIN_BRACKET;
     RenderSettings settings;
+    const volren::CompositionPolicy policy;
     for (std::int64_t n = 0; n < count; ++n) {
-        std::string key, value, error;
+        std::string key, value;
         if (!readString(is, key, field) || !readString(is, value, field + " " + key)) return false;
-        if (const std::string slot = RenderSettings::slotForKey(key); !slot.empty()) {
-            if (!validImplementationName(value))
-                return fail(is, field + ": " + key + " must name an implementation, got '" + value + "'"), false;
-            settings.functions[slot] = value;
-        } else if (!settings.set(key, value, error)) {
-            return fail(is, field + ": " + error), false;
+        try {  // implementation names are checked against the renderer's registry
+            volren::applyNodeSetting(settings, key, value, policy);
+        } catch (const volren::SettingError& e) {
+            return fail(is, field + ": " + e.what()), false;
         }
     }
     is >> is.END_BRACKET;

@@ -1,0 +1,32 @@
+#pragma once
+#include <volume_reference/ReferenceRenderer.h>
+
+namespace volren {
+
+class VolumeScene;
+
+/// The reference of a scene as the renderer draws it: the ReferenceScene and ReferenceOptions
+/// for renderReference().
+struct ReferenceSetup
+{
+    ReferenceScene scene;
+    ReferenceOptions options;
+};
+
+/// The volumes of `scene`, each lit as its CompositionPolicy chooses (Shading and Illumination
+/// from the lights that reach it, the pass's `lighting` and forced-null slots applied), its clip
+/// shapes and lights. No GL.
+ReferenceScene referenceScene(VolumeScene& scene);
+
+/// What `volren reference` and `volren bench` measure against: `scene` seen by `camera` with
+/// - each volume lit as the scene's CompositionPolicy chooses (Shading and Illumination from the
+///   lights that reach it, the pass's `lighting` and forced-null slots applied),
+/// - its clip shapes and lights,
+/// - its opaque geometry rasterised once for the same camera with every volume hidden, so that
+///   the rays end at its depth and the volumes are composited over its colour (`options`'
+///   background behind it).
+/// Part of the `volume_reference_setup` library, which links the renderer (the reference itself
+/// does not). Throws std::runtime_error when the scene shows no volume.
+ReferenceSetup referenceSetup(VolumeScene& scene, const ReferenceCamera& camera, ReferenceOptions options = {});
+
+}  // namespace volren

@@ -1,0 +1,66 @@
+#include <volume_reference/ReferenceSetup.h>
+
+#include <volume_renderer/OffscreenRenderer.h>
+#include <volume_renderer/VolumeScene.h>
+
+#include <stdexcept>
+
+namespace volren {
+
+namespace {
+
+/// Rasterises `scene` without its volumes for `camera`; fills the options' geometry depth and
+/// colour when anything was drawn.
+void rasteriseGeometry(VolumeScene& scene, const ReferenceScene& content, const ReferenceCamera& camera,
+                       ReferenceOptions& options)
+{
+    std::vector<std::pair<osg::Node*, osg::Node::NodeMask>> hidden;
+    for (const auto& placed : content.volumes) {
+        auto* node = const_cast<osg::Node*>(placed.node.get());
+        hidden.emplace_back(node, node->getNodeMask());
+        node->setNodeMask(0);
+    }
+    OffscreenRenderer geometry(camera.width, camera.height);
+    geometry.setReadDepth(true);
+    geometry.setScene(&scene);
+    geometry.setBackground(osg::Vec3(options.background));
+    geometry.camera()->setViewMatrix(camera.view);
+    geometry.camera()->setProjectionMatrix(camera.projection);
+    geometry.camera()->setComputeNearFarMode(osg::CullSettings::DO_NOT_COMPUTE_NEAR_FAR);
+    geometry.renderFrame();
+    for (auto& [node, mask] : hidden) node->setNodeMask(mask);
+    const auto* depth = reinterpret_cast<const float*>(geometry.depthImage()->data());
+    const auto* colour = reinterpret_cast<const float*>(geometry.image()->data());
+    const std::size_t pixels = std::size_t(camera.width) * std::size_t(camera.height);
+    bool any = false;
+    for (std::size_t i = 0; i < pixels && !any; ++i) any = depth[i] < 1.0f;
+    if (!any) return;
+    options.geometryDepth.assign(depth, depth + pixels);
+    options.geometryColour.assign(colour, colour + pixels * 4);
+}
+
+}  // namespace
+
+ReferenceScene referenceScene(VolumeScene& scene)
+{
+    ReferenceScene content = ReferenceScene::collect(scene);
+    // The policy's choice for each volume: only the number of lights decides its lighting.
+    SceneOffer offer;
+    offer.lights.resize(content.lights.size());
+    for (auto& placed : content.volumes) {
+        const auto& node = static_cast<const VolumeNode&>(*placed.node);
+        placed.choice = scene.policy().choose(node.settings, offer, scene.pass).composition.choice;
+    }
+    return content;
+}
+
+ReferenceSetup referenceSetup(VolumeScene& scene, const ReferenceCamera& camera, ReferenceOptions options)
+{
+    ReferenceSetup setup{referenceScene(scene), options};
+    if (setup.scene.volumes.empty()) throw std::runtime_error("the scene shows no volume");
+    setup.options.lighting = scene.pass.lighting;
+    rasteriseGeometry(scene, setup.scene, camera, setup.options);
+    return setup;
+}
+
+}  // namespace volren

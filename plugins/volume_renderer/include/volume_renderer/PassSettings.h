@@ -1,0 +1,29 @@
+#pragma once
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace volren {
+
+/// Settings of a VolumeScene pass, shared by every volume it draws (saved with the scene as
+/// `PassSettings` key/value pairs; `volren render --set` routes these keys here).
+struct PassSettings
+{
+    /// When false the scene's lights are ignored (lighting slots become null).
+    bool lighting = true;
+    /// Slots forced to null for every volume (testing, cost measurements).
+    std::set<std::string> forceNull;
+
+    /// Sets a pass setting by name (`lighting`, `forceNullAll`); false with `error` set when the
+    /// key is not a pass setting or the value is bad.
+    bool set(const std::string& key, const std::string& value, std::string& error);
+    /// Current value of pass setting `key` as text ("" for an unknown key).
+    std::string get(const std::string& key) const;
+    /// Pass setting names with one-line descriptions.
+    static std::vector<std::pair<std::string, std::string>> keys();
+    /// Whether `key` names a pass setting.
+    static bool isKey(const std::string& key);
+};
+
+}  // namespace volren

@@ -1,0 +1,213 @@
+#include <volume_renderer/CompositionPolicy.h>
+#include <volume_renderer/Slots.h>
+
+#include <volume_model/ClipNode.h>
+#include <volume_model/RenderSettings.h>
+
+#include <algorithm>
+#include <cctype>
+#include <set>
+
+namespace volren {
+
+namespace {
+
+const std::string none = "null";
+
+/// The node's and the pass's wishes for each slot.
+struct Wishes
+{
+    const RenderSettings& settings;
+    const PassSettings& pass;
+
+    bool forcedNull(const std::string& slot) const { return settings.forceNull.count(slot) || pass.forceNull.count(slot); }
+    /// The user's choice for `slot` ("null" when forced), or "" when the user named none.
+    std::string named(const std::string& slot) const
+    {
+        if (forcedNull(slot)) return none;
+        auto it = settings.functions.find(slot);
+        return it == settings.functions.end() ? std::string() : it->second;
+    }
+    std::string chosen(const std::string& slot, const std::string& fallback) const
+    {
+        const std::string n = named(slot);
+        return n.empty() ? fallback : n;
+    }
+    bool off(const std::string& slot) const { return named(slot) == none; }
+};
+
+std::string lower(std::string s)
+{
+    for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return s;
+}
+
+}  // namespace
+
+std::string CompositionPolicy::defaultImplementation(const std::string& slot)
+{
+    static const std::map<std::string, std::string> defaults = {{"RaySetup", "box_intersection"},
+                                                                {"RayTraversal", "dvr_front_to_back"},
+                                                                {"Reconstruction", "trilinear"},
+                                                                {"Classification", "tf1d"},
+                                                                {"GradientInput", "scalar"},
+                                                                {"Jitter", "hash"}};
+    auto it = defaults.find(slot);
+    return it == defaults.end() ? none : it->second;
+}
+
+std::string CompositionPolicy::neededImplementation(const std::string& slot)
+{
+    static const std::map<std::string, std::string> needed = {
+        {"Illumination", "blinn_phong"}, {"Shading", "lighting"}, {"Gradient", "central"}};
+    auto it = needed.find(slot);
+    return it == needed.end() ? defaultImplementation(slot) : it->second;
+}
+
+Composition CompositionPolicy::bare(const std::string& setup) const
+{
+    Composition c;
+    for (const SlotInfo& slot : slots())
+        if (!slot.isTemplate) c.choice[slot.name] = none;
+    c.choice["RaySetup"] = setup;
+    return c;
+}
+
+std::string CompositionPolicy::implementationForKind(const std::string& slot, const std::string& kind) const
+{
+    for (const std::string& name : _registry.names(slot))
+        if (const ShaderFunction* f = _registry.find(slot, name); f && f->traits.clipKind == kind) return name;
+    return {};
+}
+
+ChosenComposition CompositionPolicy::choose(const RenderSettings& settings, const SceneOffer& offer,
+                                            const PassSettings& pass) const
+{
+    const Wishes wish{settings, pass};
+    ChosenComposition out;
+    const std::string setup = wish.chosen("RaySetup", defaultImplementation("RaySetup"));
+    const std::string traversal = wish.chosen("RayTraversal", defaultImplementation("RayTraversal"));
+    if (setup == none || traversal == none) {  // nothing is marched, so nothing else can run
+        out.composition = bare(setup);
+        return out;
+    }
+    out.composition.choice["RayTraversal"] = traversal;
+    chooseLighting(out, settings, offer, pass);
+    for (const SlotInfo& slot : slots())
+        if (!slot.isTemplate && !out.composition.choice.count(slot.name))
+            out.composition.choice[slot.name] = wish.chosen(slot.name, defaultImplementation(slot.name));
+    chooseClips(out, settings, offer, pass);
+    return out;
+}
+
+void CompositionPolicy::chooseLighting(ChosenComposition& out, const RenderSettings& settings, const SceneOffer& offer,
+                                       const PassSettings& pass) const
+{
+    const Wishes wish{settings, pass};
+    Composition& c = out.composition;
+    const ShaderFunction* marcher = _registry.find("RayTraversal", c.choice["RayTraversal"]);
+    const bool shades = !marcher || marcher->mayCall("Shading");
+    const unsigned int lights =
+        pass.lighting && shades ? unsigned(std::min<std::size_t>(offer.lights.size(), maxLights)) : 0;
+    // Lights call for a lit Shading and its Illumination, unless the user turned one off; a
+    // Shading that never calls an Illumination (debug views, null) gets none.
+    std::string illumination =
+        shades ? wish.chosen("Illumination", lights > 0 ? neededImplementation("Illumination") : none) : none;
+    const std::string shading =
+        shades ? wish.chosen("Shading", lights > 0 && illumination != none ? neededImplementation("Shading") : none)
+               : none;
+    const ShaderFunction* shader = _registry.find("Shading", shading);
+    if (shader && !shader->mayCall("Illumination") && wish.named("Illumination").empty()) illumination = none;
+    const bool needGradient = ((shading != none && (!shader || shader->mayCall("Gradient"))) ||
+                               (marcher && marcher->requiresSlot("Gradient"))) &&
+                              !wish.off("GradientInput");
+    const std::string gradient = wish.chosen("Gradient", needGradient ? neededImplementation("Gradient") : none);
+    c.choice["Illumination"] = illumination;
+    c.choice["Shading"] = shading;
+    c.choice["Gradient"] = gradient;
+    c.choice["GradientInput"] = wish.chosen("GradientInput", gradient != none ? neededImplementation("GradientInput") : none);
+    // Implementations of unknown traits (shader-folder additions) light like a lit shading.
+    const LightUse use = shader && shader->traits.calls ? shader->traits.lights : LightUse::Required;
+    c.lightCount = use == LightUse::Optional || (use == LightUse::Required && illumination != none) ? lights : 0;
+    if (shading == none) c.lightCount = 0;
+}
+
+void CompositionPolicy::chooseClips(ChosenComposition& out, const RenderSettings& settings, const SceneOffer& offer,
+                                    const PassSettings& pass) const
+{
+    const Wishes wish{settings, pass};
+    // Each clip goes to the slot whose named implementation handles its kind, else to the first
+    // of ClipRay (whole rays: exact and cheap) and ClipPosition (per sample) that is on and has
+    // an implementation for it; otherwise it is dropped.
+    auto place = [&](const std::string& kind, const ClipInfo& clip) {
+        for (const char* slot : {"ClipPosition", "ClipRay"})
+            if (const ShaderFunction* f = _registry.find(slot, wish.named(slot)); f && f->traits.clipKind == kind) {
+                out.composition.instances[slot].push_back(f->name);
+                out.clips[slot].push_back(clip);
+                return true;
+            }
+        for (const char* slot : {"ClipRay", "ClipPosition"}) {
+            const std::string name = implementationForKind(slot, kind);
+            if (wish.off(slot) || name.empty()) continue;
+            out.composition.instances[slot].push_back(name);
+            out.clips[slot].push_back(clip);
+            return true;
+        }
+        return false;
+    };
+    out.composition.instances["ClipRay"];
+    out.composition.instances["ClipPosition"];
+    // Kinds whole rays can be cut by come first, then the opaque geometry's depth, then the rest.
+    std::vector<const ClipInfo*> rest;
+    for (const ClipInfo& clip : offer.clips) {
+        const std::string kind = clip.node->clipKind();
+        if (implementationForKind("ClipRay", kind).empty()) rest.push_back(&clip);
+        else place(kind, clip);
+    }
+    if (offer.opaqueGeometry) place("depth", ClipInfo{});
+    for (const ClipInfo* clip : rest) place(clip->node->clipKind(), *clip);
+}
+
+std::map<std::string, std::vector<ClipInfo>> CompositionPolicy::assignClips(const Composition& composition,
+                                                                           const SceneOffer& offer) const
+{
+    std::map<std::string, std::vector<ClipInfo>> out;
+    for (const auto& [slot, names] : composition.instances) {
+        std::set<std::size_t> used;
+        for (const std::string& name : names) {
+            const ShaderFunction* f = _registry.find(slot, name);
+            ClipInfo clip;
+            for (std::size_t i = 0; f && i < offer.clips.size(); ++i)
+                if (!used.count(i) && f->traits.clipKind == offer.clips[i].node->clipKind()) {
+                    clip = offer.clips[i];
+                    used.insert(i);
+                    break;
+                }
+            out[slot].push_back(clip);
+        }
+    }
+    return out;
+}
+
+std::vector<std::string> CompositionPolicy::choosable(const std::string& slot) const
+{
+    std::vector<std::string> names = _registry.names(slot);
+    const std::string first = defaultImplementation(slot);
+    if (auto it = std::find(names.begin(), names.end(), first); it != names.end()) std::rotate(names.begin(), it, it + 1);
+    return names;
+}
+
+std::string CompositionPolicy::resolve(const std::string& slot, const std::string& value) const
+{
+    const std::string v = lower(value);
+    if (v == "off" || v == "none" || v == "0" || v == "false") return none;
+    if (v == "on" || v == "1" || v == "true") return neededImplementation(slot);
+    for (const std::string& name : _registry.names(slot)) {
+        if (name == v) return name;
+        const ShaderFunction* f = _registry.find(slot, name);
+        if (std::find(f->traits.aliases.begin(), f->traits.aliases.end(), v) != f->traits.aliases.end()) return name;
+    }
+    return {};
+}
+
+}  // namespace volren

@@ -1,0 +1,264 @@
+#include "ProgramAssembly.h"
+
+#include <volume_renderer/Slots.h>
+
+#include <fstream>
+#include <map>
+#include <regex>
+#include <stdexcept>
+
+namespace volren {
+
+namespace {
+
+std::string readText(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw std::runtime_error("cannot read shader file " + path);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+std::string replaceAll(std::string text, const std::string& from, const std::string& to)
+{
+    for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
+        text.replace(at, from.size(), to);
+    return text;
+}
+
+/// Renames whole-word identifier `from` to `to` in GLSL source.
+std::string renameIdentifier(const std::string& text, const std::string& from, const std::string& to)
+{
+    return std::regex_replace(text, std::regex("\\b" + from + "\\b"), to);
+}
+
+/// Names a file defines at its top level (functions and global variables).
+std::set<std::string> definedNames(const std::string& text)
+{
+    static const std::regex definition(R"((?:^|\n)(?:float|int|bool|void|vec[234]|mat[234])\s+(volren_\w+))");
+    std::set<std::string> names;
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), definition); it != std::sregex_iterator(); ++it)
+        names.insert((*it)[1].str());
+    return names;
+}
+
+/// Gives every volren_ name in `text` that is not in `shared` the member suffix, and the
+/// per-composition macros (VOLREN_LIGHT_COUNT, VOLREN_LIGHT_ARRAY) too.
+std::string renameForMember(const std::string& text, const std::set<std::string>& shared, const std::string& suffix)
+{
+    static const std::regex name(R"(\b(volren_\w+|VOLREN_LIGHT_COUNT|VOLREN_LIGHT_ARRAY)\b)");
+    std::string out;
+    auto last = text.cbegin();
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), name); it != std::sregex_iterator(); ++it) {
+        out.append(last, text.cbegin() + it->position());
+        out += it->str();
+        if (!shared.count(it->str())) out += suffix;
+        last = text.cbegin() + it->position() + it->length();
+    }
+    out.append(last, text.cend());
+    return out;
+}
+
+const char* const glslVersion = "#version 430 core\n";
+
+}  // namespace
+
+ProgramAssembly::ProgramAssembly(const ShaderFunctionRegistry& registry, const Composition& composition,
+                                 ComposedProgram& result)
+    : _registry(registry), _composition(composition), _result(result)
+{
+}
+
+const ShaderFunction* ProgramAssembly::lookup(const std::string& slot, const std::string& name) const
+{
+    const ShaderFunction* f = _registry.find(slot, name);
+    if (!f) {
+        std::string known;
+        for (const auto& n : _registry.names(slot)) known += (known.empty() ? "" : ", ") + n;
+        throw std::runtime_error("slot " + slot + ": no implementation '" + name + "' (known: " + known + ")");
+    }
+    return f;
+}
+
+void ProgramAssembly::pick(const Composition& c, int member)
+{
+    // One implementation per ordinary slot, one per instance of template slots; for a
+    // multi-volume set, the set's own and then every member's (with the member's suffix).
+    const std::string memberSuffix = member < 0 ? "" : "_v" + std::to_string(member);
+    for (const SlotInfo& s : slots()) {
+        if (s.isTemplate) {
+            const std::vector<std::string>& names = c.instancesOf(s.name);
+            for (std::size_t k = 0; k < names.size(); ++k)
+                _result.bindings.push_back({lookup(s.name, names[k]), "_" + std::to_string(k), int(k), member, memberSuffix});
+            continue;
+        }
+        const ShaderFunction* f = lookup(s.name, c.functionFor(s.name));
+        if (f->traits.multiVolume != (member < 0 && !_composition.members.empty()) && s.name == "RayTraversal")
+            throw std::runtime_error("slot RayTraversal: '" + f->name + "' " +
+                                     (f->traits.multiVolume ? "only marches a multi-volume set"
+                                                            : "cannot march a multi-volume set"));
+        _result.bindings.push_back({f, "", -1, member, memberSuffix});
+        if (member >= 0) continue;
+        if (s.name == "RaySetup") _raySetup = f;
+        if (s.name == "RayTraversal") _result.writesDepth = f->traits.writesDepth;
+    }
+    if (member >= 0) _result.bindings.push_back({lookup("MultiVolume", "member"), "", -1, member, memberSuffix});
+}
+
+std::string ProgramAssembly::declarations() const
+{
+    // Each uniform and sampler once; a clash in type is an error naming both.
+    std::map<std::string, std::pair<std::string, const ShaderFunction*>> declared;
+    std::ostringstream decls;
+    auto declare = [&](const std::string& name, const std::string& type, const ShaderFunction* owner) {
+        auto [it, inserted] = declared.emplace(name, std::make_pair(type, owner));
+        if (!inserted && it->second.first != type)
+            throw std::runtime_error("uniform '" + name + "' declared as " + it->second.first + " by " +
+                                     it->second.second->slot + "/" + it->second.second->name + " and as " + type +
+                                     " by " + owner->slot + "/" + owner->name);
+        if (inserted) decls << "uniform " << type << " " << name << ";  // " << owner->slot << "/" << owner->name << "\n";
+    };
+    int nextUnit = 0;
+    for (const Binding& b : _result.bindings) {
+        for (const TextureDecl& t : b.function->textures) {
+            const std::string name = (t.shared ? t.name : t.name + b.suffix) + b.memberSuffix;
+            if (!_result.textureUnits.count(name)) _result.textureUnits[name] = nextUnit++;
+            declare(name, t.samplerType, b.function);
+        }
+        for (const UniformDecl& u : b.function->uniforms) {
+            const std::string name = (u.shared ? u.name : u.name + b.suffix) + b.memberSuffix;
+            const std::string size = u.arraySize.rfind("VOLREN_", 0) == 0 ? u.arraySize + b.memberSuffix : u.arraySize;
+            declare(size.empty() ? name : name + "[" + size + "]", u.glslType, b.function);
+        }
+    }
+    return decls.str();
+}
+
+std::string ProgramAssembly::header() const
+{
+    std::ostringstream src;
+    src << glslVersion;
+    src << "// volren composed ray caster: " << _result.key << "\n";
+    src << "#define VOLREN_LIGHT_COUNT " << _composition.lightCount << "\n";
+    src << "#define VOLREN_LIGHT_ARRAY " << std::max(1u, _composition.lightCount) << "\n";
+    if (!_composition.members.empty()) src << "#define VOLREN_MEMBER_COUNT " << _composition.members.size() << "\n";
+    for (std::size_t k = 0; k < _composition.members.size(); ++k) {
+        const unsigned int lights = _composition.members[k].lightCount;
+        src << "#define VOLREN_LIGHT_COUNT_v" << k << " " << lights << "\n";
+        src << "#define VOLREN_LIGHT_ARRAY_v" << k << " " << std::max(1u, lights) << "\n";
+    }
+    return src.str();
+}
+
+void ProgramAssembly::append(const std::string& name, const std::string& text)
+{
+    const int index = int(_result.sourceNames.size());
+    _result.sourceNames.push_back(name);
+    _src << "// ---- " << name << " ----\n#line 1 " << index << "\n" << text << "\n";
+}
+
+std::string ProgramAssembly::file(const std::string& relative) const
+{
+    return readText(_registry.locate(relative));
+}
+
+std::string ProgramAssembly::source(const ShaderFunction* f) const
+{
+    try {
+        return file(f->file);
+    } catch (const std::exception& e) {
+        throw std::runtime_error("slot " + f->slot + ", implementation " + f->name + ": " + e.what());
+    }
+}
+
+ProgramAssembly::Sources ProgramAssembly::slotSources(int member) const
+{
+    // The slots of the set's own composition (member < 0), or of one member.
+    Sources out;
+    std::set<std::string> included;
+    for (const SlotInfo& s : slots()) {
+        if (member >= 0 && s.perSet) continue;
+        std::vector<const Binding*> mine;
+        for (const Binding& b : _result.bindings)
+            if (b.member == member && b.function->slot == s.name) mine.push_back(&b);
+        if (s.isTemplate) {
+            auto dispatcher = templateSources(s, mine, out);  // after the instances it calls
+            out.push_back(std::move(dispatcher));
+            continue;
+        }
+        for (const std::string& helper : mine.front()->function->includes)
+            if (included.insert(helper).second) out.emplace_back(helper, file(helper));
+        out.emplace_back(mine.front()->function->file, source(mine.front()->function));
+    }
+    return out;
+}
+
+std::pair<std::string, std::string> ProgramAssembly::templateSources(const SlotInfo& s,
+                                                                     const std::vector<const Binding*>& mine,
+                                                                     Sources& out) const
+{
+    // Each instance renamed apart into `out`; returns the slot function dispatching over them.
+    std::string calls;
+    for (const Binding* b : mine) {
+        std::string text = renameIdentifier(source(b->function), s.function, s.function + b->suffix);
+        for (const UniformDecl& u : b->function->uniforms)
+            if (!u.shared) text = renameIdentifier(text, u.name, u.name + b->suffix);
+        for (const TextureDecl& t : b->function->textures)
+            if (!t.shared) text = renameIdentifier(text, t.name, t.name + b->suffix);
+        out.emplace_back(b->function->file + " (instance " + std::to_string(b->instance) + ")", text);
+        calls += (calls.empty() || s.join.empty() ? "" : s.join) + replaceAll(s.call, "{k}", std::to_string(b->instance));
+    }
+    const std::string body = mine.empty() ? s.empty : replaceAll(s.wrap, "{calls}", calls);
+    return {"<" + s.name + " dispatcher over " + std::to_string(mine.size()) + " instances>",
+            "// " + s.name + ": template over " + std::to_string(mine.size()) + " instances\n" + s.signature + "\n{\n" +
+                body + "}\n"};
+}
+
+void ProgramAssembly::appendMembers(const std::string& numerics, const std::string& slotDeclarations)
+{
+    // Each member's slots, prototypes and glue, renamed apart by its suffix except for what the
+    // set defines once; then dispatchers over the members.
+    std::set<std::string> shared = definedNames(numerics);
+    for (const std::string& n : definedNames(file("RaySetup/ray.glsl"))) shared.insert(n);
+    const ShaderFunction* glue = lookup("MultiVolume", "member");
+    std::string rays, samples;
+    for (std::size_t k = 0; k < _composition.members.size(); ++k) {
+        const std::string suffix = "_v" + std::to_string(k);
+        const std::string of = " (member " + std::to_string(k) + ")";
+        append("slots.glsl" + of, renameForMember(slotDeclarations, shared, suffix));
+        for (const auto& [name, text] : slotSources(int(k))) append(name + of, renameForMember(text, shared, suffix));
+        append(glue->file + of, renameForMember(source(glue), shared, suffix));
+        const std::string branch = std::string(k ? "    else if" : "    if") + " (k == " + std::to_string(k) + ")";
+        rays += branch + " volren_memberRay" + suffix + "(origin, dir, memberOrigin, memberDir, worldPerT, tNear, tFar);\n";
+        samples += branch + " return volren_memberSample" + suffix + "(pos, memberDir, worldLength, emitted);\n";
+    }
+    append("<MultiVolume dispatchers over " + std::to_string(_composition.members.size()) + " members>",
+           "void volren_setMemberRay(int k, vec3 origin, vec3 dir, out vec3 memberOrigin, out vec3 memberDir,\n"
+           "                         out float worldPerT, inout float tNear, inout float tFar)\n{\n"
+           "    memberOrigin = vec3(0.0);\n    memberDir = vec3(0.0);\n    worldPerT = 0.0;\n" +
+               rays +
+               "}\n"
+               "float volren_setMemberSample(int k, vec3 pos, vec3 memberDir, float worldLength, out vec3 emitted)\n{\n" +
+               samples + "    emitted = vec3(0.0);\n    return 0.0;\n}\n");
+}
+
+const ShaderFunction* ProgramAssembly::assemble()
+{
+    pick(_composition, -1);
+    for (std::size_t k = 0; k < _composition.members.size(); ++k) pick(_composition.members[k], int(k));
+    const std::string decls = declarations();
+    _src << header();
+    _result.sourceNames.push_back("<generated declarations>");
+    _src << decls;
+    const std::string numerics = file("common/numerics.glsl");
+    const std::string slotDeclarations = file("slots.glsl");
+    append("common/numerics.glsl", numerics);
+    append("slots.glsl", slotDeclarations);
+    for (const auto& [name, text] : slotSources(-1)) append(name, text);
+    if (!_composition.members.empty()) appendMembers(numerics, slotDeclarations);
+    _result.fragmentSource = _src.str();
+    return _raySetup;
+}
+
+}  // namespace volren

@@ -1,0 +1,46 @@
+#pragma once
+// Internal to the compositor: the composed fragment source of one composition.
+#include <volume_renderer/ShaderCompositor.h>
+#include <volume_renderer/Slots.h>
+
+#include <set>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace volren {
+
+/// Builds the bindings, declarations and fragment source of one composition into `result`:
+/// string 0 is the generated header and declarations, then the common files, then one string
+/// per implementation (template instances renamed apart), then, for a multi-volume set, each
+/// member's slots renamed by its suffix and the dispatchers over the members.
+class ProgramAssembly
+{
+public:
+    ProgramAssembly(const ShaderFunctionRegistry& registry, const Composition& composition, ComposedProgram& result);
+    /// Runs every step; returns the RaySetup (its vertex file is the program's vertex stage).
+    const ShaderFunction* assemble();
+
+private:
+    using Sources = std::vector<std::pair<std::string, std::string>>;  ///< (name, text) in order
+    const ShaderFunction* lookup(const std::string& slot, const std::string& name) const;
+    void pick(const Composition& c, int member);
+    std::string declarations() const;
+    std::string header() const;
+    void append(const std::string& name, const std::string& text);
+    std::string source(const ShaderFunction* f) const;
+    std::string file(const std::string& relative) const;
+    Sources slotSources(int member) const;
+    std::pair<std::string, std::string> templateSources(const SlotInfo& slot, const std::vector<const Binding*>& mine,
+                                                        Sources& out) const;
+    void appendMembers(const std::string& numerics, const std::string& slotDeclarations);
+
+    const ShaderFunctionRegistry& _registry;
+    const Composition& _composition;
+    ComposedProgram& _result;
+    const ShaderFunction* _raySetup = nullptr;
+    std::ostringstream _src;
+};
+
+}  // namespace volren

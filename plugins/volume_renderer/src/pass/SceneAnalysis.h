@@ -1,0 +1,32 @@
+#pragma once
+// Internal to the pass: what a VolumeScene's cull traversal finds below it.
+#include <volume_renderer/CompositionPolicy.h>
+
+#include <volume_model/VolumeNode.h>
+
+#include <osg/Group>
+
+#include <vector>
+
+namespace volren {
+
+/// One volume found below a VolumeScene, with what the scene offers it.
+struct VolumeCandidate
+{
+    VolumeNode* node = nullptr;
+    osg::Matrix matrix;        ///< node -> VolumeScene
+    SceneOffer offer;          ///< lights, clip shapes and opaque geometry, in the node's coordinates
+    osg::BoundingBoxd bound;   ///< its box in the VolumeScene's axes
+};
+
+/// The volumes (with a volume, a TF and voxels), lights, clip shapes and opaque geometry below
+/// `scene`'s children that `mask` lets through; lights in eye coordinates are placed by the
+/// camera's `modelView`. Warns once per call when more lights than a volume takes are found
+/// and `lighting` is on.
+std::vector<VolumeCandidate> analyseScene(osg::Group& scene, unsigned int mask, const osg::Matrix& modelView,
+                                          bool lighting);
+
+/// Volume texture space -> the VolumeNode's local coordinates.
+osg::Matrixd textureToLocal(const Volume& volume);
+
+}  // namespace volren

@@ -1,0 +1,214 @@
+#include "MultiVolumeSet.h"
+#include "ProgramBinder.h"
+#include "SceneAnalysis.h"
+
+#include "../resources/TextureCache.h"
+#include "../resources/VolumeProxy.h"
+
+#include <volume_renderer/SampleDistance.h>
+#include <volume_renderer/ScreenPasses.h>
+#include <volume_renderer/VolumeScene.h>
+
+#include <osg/Notify>
+#include <osgUtil/CullVisitor>
+
+#include <algorithm>
+
+namespace volren {
+
+/// What the pass keeps between frames: proxies, textures, per-camera screen passes.
+struct VolumeScene::Pass
+{
+    ScreenPasses screen;
+    TextureCache textures;
+    std::map<const VolumeNode*, VolumeProxy> proxies;
+    std::map<std::vector<const VolumeNode*>, VolumeProxy> sets;  ///< multi-volume sets, by member
+    std::set<std::vector<const VolumeNode*>> warnedOverlaps;
+    std::vector<std::string> lastKeys;
+    unsigned int cull = 0;
+
+    /// Culls `proxy` placed by `matrix`, with the per-camera screen data its program needs.
+    void draw(osgUtil::CullVisitor& cv, VolumeProxy& proxy, const osg::Matrix& matrix, const VolumeNode* node,
+              std::set<std::string>& keys);
+    /// Composes and binds the proxy of one volume.
+    VolumeProxy& update(const VolumeCandidate& c, const ChosenComposition& chosen, ShaderCompositor& compositor);
+    /// Forgets proxies and textures no cull traversal used lately.
+    void endCull();
+};
+
+void VolumeScene::Pass::draw(osgUtil::CullVisitor& cv, VolumeProxy& proxy, const osg::Matrix& matrix,
+                             const VolumeNode* node, std::set<std::string>& keys)
+{
+    proxy.lastCull = cull;
+    // A core profile needs buffer objects and a vertex array object. A compatibility context
+    // gets plain client arrays, as OSG 3.6 mishandles both there: display-list models drawn
+    // after a VAO drawable vanish from the next frame on. OSG's attribute aliasing, which a core
+    // profile needs, tells the two apart.
+    proxy.useVertexArrayObject(cv.getState() && cv.getState()->getUseVertexAttributeAliasing());
+    proxy.transform->setMatrix(matrix);
+    keys.insert(proxy.key);
+    int pushed = 0;
+    if (proxy.program->needs(AuxData::DepthTexture)) {
+        cv.pushStateSet(screen.depthState(cv, proxy.program->textureUnits.at("volren_depthTexture")));
+        ++pushed;
+    }
+    if (proxy.program->needs(AuxData::EntryPoints)) {
+        cv.pushStateSet(screen.entryState(cv, node, *proxy.geometry, proxy.boxSize, matrix));
+        ++pushed;
+    }
+    proxy.transform->accept(cv);
+    for (; pushed > 0; --pushed) cv.popStateSet();
+}
+
+VolumeProxy& VolumeScene::Pass::update(const VolumeCandidate& c, const ChosenComposition& chosen,
+                                       ShaderCompositor& compositor)
+{
+    std::shared_ptr<const ComposedProgram> program = compositor.program(chosen.composition);
+    VolumeProxy& proxy = proxies[c.node];
+    osg::StateSet& ss = proxy.update(c.node->getVolume()->worldSize(), program);
+    BindContext context = bindContextFor(*c.node, ss, *program);
+    context.lights = c.offer.lights;
+    context.writesDepth = program->writesDepth;
+    bindProgram(context, *program, chosen.clips, -1, textures, cull);
+    return proxy;
+}
+
+void VolumeScene::Pass::endCull()
+{
+    auto stale = [this](unsigned int last) { return cull - last > 2; };
+    for (auto it = proxies.begin(); it != proxies.end();) it = stale(it->second.lastCull) ? proxies.erase(it) : std::next(it);
+    for (auto it = sets.begin(); it != sets.end();) it = stale(it->second.lastCull) ? sets.erase(it) : std::next(it);
+    textures.endCull(cull);
+    screen.endCull(cull);
+}
+
+VolumeScene::VolumeScene() : _state(std::make_unique<Pass>()) {}
+
+VolumeScene::VolumeScene(const VolumeScene& other, const osg::CopyOp& copyop)
+    : osg::Group(other, copyop), pass(other.pass), _state(std::make_unique<Pass>())
+{
+}
+
+VolumeScene::~VolumeScene() = default;
+
+void VolumeScene::traverse(osg::NodeVisitor& nv)
+{
+    osg::Group::traverse(nv);
+    auto* cv = nv.asCullVisitor();
+    if (!cv) return;
+
+    const std::vector<VolumeCandidate> candidates =
+        analyseScene(*this, nv.getTraversalMask(), *cv->getModelViewMatrix(), pass.lighting);
+    std::vector<ChosenComposition> chosen;
+    std::vector<osg::BoundingBoxd> bounds;
+    for (const VolumeCandidate& c : candidates) {
+        chosen.push_back(forcedComposition ? ChosenComposition{*forcedComposition,
+                                                               _policy.assignClips(*forcedComposition, c.offer)}
+                                           : _policy.choose(c.node->settings, c.offer, pass));
+        bounds.push_back(c.bound);
+    }
+    std::vector<const Composition*> compositions;
+    for (const ChosenComposition& c : chosen) compositions.push_back(&c.composition);
+
+    std::lock_guard<std::mutex> lock(_mutex);
+    Pass& p = *_state;
+    ++p.cull;
+    p.screen.beginCull(*cv, p.cull);
+    std::set<std::string> keys;
+    for (const RayGroup& group : _policy.rayGroups(bounds, compositions, forcedComposition.has_value())) {
+        std::vector<const VolumeNode*> nodes;
+        for (std::size_t i : group.members) nodes.push_back(candidates[i].node);
+        if (group.shared) {
+            try {
+                std::vector<SetMember> members;
+                for (std::size_t i : group.members) members.push_back({&candidates[i], chosen[i]});
+                VolumeProxy& proxy = p.sets[nodes];
+                updateSetProxy(proxy, members, _policy, _compositor, p.textures, p.cull);
+                osg::BoundingBox box;  // in float, as the proxy's vertices
+                for (const SetMember& m : members) box.expandBy(osg::BoundingBox(m.candidate->bound));
+                p.draw(*cv, proxy, osg::Matrix::translate(box.center()), nullptr, keys);
+                continue;
+            } catch (const std::exception& e) {
+                OSG_WARN << "volren: cannot draw the overlapping volumes '" << nodes.front()->getName()
+                         << "', ... as one set (drawn one by one): " << e.what() << std::endl;
+            }
+        } else if (nodes.size() > 1 && p.warnedOverlaps.insert(nodes).second) {
+            OSG_WARN << "volren: volume '" << nodes.front()->getName() << "' and " << nodes.size() - 1
+                     << " other(s) overlap but not all composite emission-absorption (or a composition is "
+                        "forced); they are drawn one after another, which is exact only where they do not overlap"
+                     << std::endl;
+        }
+        for (std::size_t i : group.members) {
+            try {
+                p.draw(*cv, p.update(candidates[i], chosen[i], _compositor), candidates[i].matrix, candidates[i].node, keys);
+            } catch (const std::exception& e) {
+                OSG_WARN << "volren: cannot draw volume '" << candidates[i].node->getName() << "': " << e.what()
+                         << std::endl;
+            }
+        }
+    }
+    p.lastKeys.assign(keys.begin(), keys.end());
+    p.endCull();
+}
+
+std::vector<std::string> VolumeScene::compositionKeys() const
+{
+    std::lock_guard<std::mutex> lock(_mutex);
+    return _state->lastKeys;
+}
+
+std::vector<std::pair<std::string, std::shared_ptr<const ComposedProgram>>> VolumeScene::programs() const
+{
+    std::lock_guard<std::mutex> lock(_mutex);
+    std::vector<std::pair<std::string, std::shared_ptr<const ComposedProgram>>> out;
+    for (const auto& [node, proxy] : _state->proxies)
+        if (proxy.lastCull == _state->cull && proxy.program) out.emplace_back(node->getName(), proxy.program);
+    for (const auto& [nodes, proxy] : _state->sets) {
+        if (proxy.lastCull != _state->cull || !proxy.program) continue;
+        std::string names;
+        for (const VolumeNode* node : nodes) names += (names.empty() ? "" : " + ") + node->getName();
+        out.emplace_back(names, proxy.program);
+    }
+    return out;
+}
+
+std::size_t VolumeScene::auxiliaryTextureCount() const
+{
+    std::lock_guard<std::mutex> lock(_mutex);
+    return _state->textures.count() + _state->screen.textureCount();
+}
+
+std::size_t VolumeScene::textureBytes() const
+{
+    std::lock_guard<std::mutex> lock(_mutex);
+    return _state->screen.textureBytes() + _state->textures.bytes();
+}
+
+void VolumeScene::checkPrograms(osg::State& state) const
+{
+    std::lock_guard<std::mutex> lock(_mutex);
+    std::vector<const VolumeProxy*> all;
+    for (const auto& entry : _state->proxies) all.push_back(&entry.second);
+    for (const auto& entry : _state->sets) all.push_back(&entry.second);
+    for (const VolumeProxy* proxy : all) {
+        // Only what the last cull drew: another viewer of the same scene (a second context) has
+        // not applied the programs of proxies it did not draw.
+        if (!proxy->program || proxy->lastCull != _state->cull) continue;
+        const osg::Program* program = proxy->program->program.get();
+        osg::Program::PerContextProgram* pcp = program->getPCP(state);
+        if (!pcp || pcp->isLinked()) continue;
+        std::string log = "volren: shader program for '" + proxy->key + "' failed:\n";
+        for (unsigned int i = 0; i < program->getNumShaders(); ++i) {
+            std::string shaderLog;
+            const osg::Shader* shader = program->getShader(i);
+            if (osg::Shader::PerContextShader* pcs = shader->getPCS(state); pcs && pcs->getInfoLog(shaderLog))
+                log += shader->getName() + ":\n" + shaderLog;
+        }
+        std::string linkLog;
+        program->getGlProgramInfoLog(state.getContextID(), linkLog);
+        log += linkLog;
+        throw std::runtime_error(ShaderCompositor::explainLog(log, *proxy->program));
+    }
+}
+
+}  // namespace volren
