@@ -43,6 +43,15 @@ void registerShadingFunctions(ShaderFunctionRegistry& registry)
     };
     registry.add(threshold);
 
+    // Lit on boundaries only, weighted by the gradient magnitude against volren_gradientScale.
+    ShaderFunction surface = lit("lighting_surface", {bindings::gradientScale});
+    surface.bind = [](BindContext& c) {
+        bindings::bindGeometry(c);
+        bindings::bindLights(c);
+        bindings::bindGradientScale(c);
+    };
+    registry.add(surface);
+
     registry.add({.slot = "Shading",
                   .name = "debug",
                   .uniforms = bindings::geometry + bindings::lights +
