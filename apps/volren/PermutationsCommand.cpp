@@ -71,6 +71,20 @@ void dumpComposition(const std::string& dir, std::size_t index, const VolumeScen
     if (!source || !image) throw std::runtime_error(base + ": cannot write the dump");
 }
 
+/// A line of /proc/self/status ("VmRSS", "VmHWM") in MiB, or -1.
+double statusMb(const std::string& field)
+{
+    std::ifstream status("/proc/self/status");
+    for (std::string line; std::getline(status, line);)
+        if (line.rfind(field + ":", 0) == 0) return std::stod(line.substr(field.size() + 1)) / 1024.0;  // in kB
+    return -1.0;
+}
+double residentMb() { return statusMb("VmRSS"); }
+double peakResidentMb() { return statusMb("VmHWM"); }
+
+/// How often the sweep reports its resident memory.
+constexpr std::size_t memoryEvery = 500;
+
 double median(std::vector<double> v)
 {
     if (v.empty()) return 0.0;
@@ -144,11 +158,13 @@ int permutationsCommand(const std::vector<std::string>& args)
 
     OffscreenRenderer renderer(8, 8);
     osg::ref_ptr<VolumeScene> scene = sweepScene();
+    scene->compositor().setCacheSize(0);  // a sweep never returns to a composition: keep none
     renderer.setScene(scene.get());
     renderer.camera()->setViewMatrixAsLookAt(osg::Vec3d(20, -25, 15), osg::Vec3d(), osg::Vec3d(0, 0, 1));
     renderer.camera()->setProjectionMatrixAsPerspective(40, 1, 1, 100);
     std::vector<double> compileMs;
     std::size_t failures = 0;
+    nlohmann::json resident = nlohmann::json::array();  // resident memory every memoryEvery compositions
     nlohmann::json failed = nlohmann::json::array();
     for (std::size_t i = first; i < end; ++i) {
         const Composition composition = space.at(indices[i]);
@@ -187,7 +203,11 @@ int permutationsCommand(const std::vector<std::string>& args)
             failed.push_back({{"key", composition.key()}, {"error", problem}});
             std::cout << "FAILED " << composition.key() << "\n  " << problem << std::endl;
         }
-        if ((i - first + 1) % 500 == 0) std::cout << "  " << (i - first + 1) << " done" << std::endl;
+        if ((i - first + 1) % memoryEvery == 0) {
+            const double mb = residentMb();
+            resident.push_back({{"done", i - first + 1}, {"resident_mb", mb}});
+            std::cout << "  " << (i - first + 1) << " done, resident " << mb << " MB" << std::endl;
+        }
     }
     std::cout << (render ? "rendered " : "compiled ") << compileMs.size() << ", failures " << failures
               << ", median " << (render ? "frame incl. compile" : "compile+link") << " " << median(compileMs) << " ms"
@@ -196,7 +216,8 @@ int permutationsCommand(const std::vector<std::string>& args)
         nlohmann::json stats = {{"valid_compositions", space.size()}, {"tested", compileMs.size()},
                                 {"failures", failures}, {"failed", failed}, {"median_ms", median(compileMs)},
                                 {"mode", render ? "render" : "compile"}, {"pairwise", pairwise},
-                                {"max_instances", maxInstances}, {"max_lights", maxLights}};
+                                {"max_instances", maxInstances}, {"max_lights", maxLights},
+                                {"resident", resident}, {"peak_resident_mb", peakResidentMb()}};
         std::ofstream(statsFile) << stats.dump(2) << "\n";
     }
     return failures == 0 ? 0 : 1;

@@ -55,7 +55,7 @@ public:
 
     /// Number of programs held (in use or among the recently used).
     std::size_t programCount() const;
-    /// Unused programs kept for reuse (default 32; 0 keeps only those in use).
+    /// Unused programs kept for reuse (default 8; 0 keeps only those in use).
     void setCacheSize(std::size_t programs);
     /// The registry implementations come from.
     const ShaderFunctionRegistry& registry() const { return _registry; }
@@ -68,7 +68,7 @@ private:
     mutable std::mutex _mutex;
     std::map<std::string, std::weak_ptr<const ComposedProgram>> _live;
     std::list<std::shared_ptr<const ComposedProgram>> _recent;  ///< most recent first
-    std::size_t _cacheSize = 32;
+    std::size_t _cacheSize = 8;
 };
 
 }  // namespace volren
