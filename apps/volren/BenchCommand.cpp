@@ -152,132 +152,172 @@ BenchOptions parseBenchOptions(const std::vector<std::string>& args)
     return o;
 }
 
+/// One dataset at one size: its scene, the renderer, the camera, and the truths computed so far.
+class BenchRun
+{
+public:
+    BenchRun(const std::string& input, int width, int height, const BenchOptions& options)
+        : _options(options), _width(width), _height(height), _renderer(width, height)
+    {
+        RenderOptions ro;
+        ro.input = input;
+        ro.width = width;
+        ro.height = height;
+        _scene = loadScene(ro);
+        _dataset = input.empty() ? "default.osgt (ch2.nii.gz)" : osgDB::getSimpleFileName(input);
+        _nodes = findVolumeNodes(*_scene);
+        if (_nodes.empty()) throw std::runtime_error(_dataset + ": the scene shows no volume");
+        for (VolumeNode* n : _nodes) _original.emplace_back(n->settings, n->getVolume());
+        _originalPass = _scene->pass;
+        _renderer.setScene(_scene.get());
+        setUpCamera(*_renderer.camera(), *_scene, ro, double(width) / height);
+        _camera.view = _renderer.camera()->getViewMatrix();
+        _camera.projection = _renderer.camera()->getProjectionMatrix();
+        _camera.width = width;
+        _camera.height = height;
+    }
+
+    std::string context() const { return _renderer.contextDescription(); }
+
+    /// The row of `config`: its frame time and its error against the truth of what it draws.
+    BenchRow run(const BenchConfig& config)
+    {
+        restore();
+        for (const auto& [key, value] : config.settings) {
+            try {
+                applySetting(*_scene, key, value);
+            } catch (const SettingError& e) {
+                throw UsageError(config.name + ": " + e.what());
+            }
+        }
+        const std::string truth = truthKey();
+        if (config.precision != "native")
+            for (VolumeNode* n : _nodes) n->setVolume(requantise(*n->getVolume(), precisionType(config.precision)).get());
+        BenchRow row = timeFrames(config.name);
+        row.truth = truth;
+        row.error = imageError(*_renderer.image(), _truths.at(truth));
+        std::cerr << "volren bench: " << config.name << ": " << row.frameMs << " ms, RMSE " << row.error.rmse << std::endl;
+        return row;
+    }
+
+    /// The row of VTK's GPU ray caster on the scene's own settings.
+    BenchRow runVtk()
+    {
+        restore();
+        const auto peer = runVtkPeer(*_scene, _camera, _options.frames, _options.out);
+        BenchRow row = peer.first;
+        row.dataset = _dataset;
+        row.truth = truthKey();
+        row.error = imageError(*peer.second, _truths.at(row.truth));
+        return row;
+    }
+
+private:
+    static VoxelType precisionType(const std::string& precision)
+    {
+        return precision == "8bit" ? VoxelType::UInt8 : precision == "16bit" ? VoxelType::UInt16 : VoxelType::Float32;
+    }
+
+    /// The scene's own settings, pass settings and volumes.
+    void restore()
+    {
+        _scene->pass = _originalPass;
+        for (std::size_t k = 0; k < _nodes.size(); ++k) {
+            _nodes[k]->settings = _original[k].first;
+            _nodes[k]->setVolume(_original[k].second.get());
+        }
+    }
+
+    /// The truth of what the scene draws now (made on first use): the reference at full
+    /// precision, as `volren reference` makes it; configurations drawing the same picture share it.
+    std::string truthKey()
+    {
+        const std::string key = lightingModel(referenceScene(*_scene), _scene->pass.lighting);
+        if (_truths.count(key)) return key;
+        ReferenceOptions ref;
+        ref.tolerance = _options.tolerance;
+        ref.gradient = _options.normals;
+        const auto start = std::chrono::steady_clock::now();
+        const ReferenceSetup setup = referenceSetup(*_scene, _camera, ref);
+        _truths[key] = renderReference(setup.scene, _camera, setup.options);
+        std::cerr << "volren bench: reference '" << key << "' of " << _dataset << " at " << _width << "x" << _height
+                  << " in " << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s"
+                  << std::endl;
+        return key;
+    }
+
+    /// Medians over the frames after two warm-up frames (programs compiled, textures uploaded).
+    BenchRow timeFrames(const std::string& name)
+    {
+        _renderer.setScene(_scene.get());
+        const double freeBefore = freeGpuMemoryMb(*_renderer.state());
+        std::vector<double> draw, gpu, cpu;
+        for (int f = 0; f < _options.frames + 2; ++f) {
+            const FrameTiming t = _renderer.renderFrame();
+            if (!t.glErrors.empty()) throw std::runtime_error(name + ": GL error: " + t.glErrors.front());
+            if (f < 2) continue;
+            draw.push_back(t.drawMs);
+            gpu.push_back(t.gpuMs);
+            cpu.push_back(t.cpuMs);
+        }
+        const double freeAfter = freeGpuMemoryMb(*_renderer.state());
+        BenchRow row;
+        row.dataset = _dataset;
+        row.width = _width;
+        row.height = _height;
+        row.config = name;
+        row.frameMs = median(draw);
+        row.gpuMs = median(gpu);
+        row.cpuMs = median(cpu);
+        row.textureMb = double(_renderer.volumeScene()->textureBytes()) / (1024.0 * 1024.0);
+        row.gpuMemoryMb = freeBefore >= 0.0 && freeAfter >= 0.0 ? freeBefore - freeAfter : -1.0;
+        row.keys = _renderer.volumeScene()->compositionKeys();
+        return row;
+    }
+
+    const BenchOptions& _options;
+    int _width, _height;
+    OffscreenRenderer _renderer;
+    osg::ref_ptr<VolumeScene> _scene;
+    std::string _dataset;
+    std::vector<VolumeNode*> _nodes;
+    std::vector<std::pair<RenderSettings, osg::ref_ptr<Volume>>> _original;
+    PassSettings _originalPass;
+    ReferenceCamera _camera;
+    std::map<std::string, ReferenceImage> _truths;  ///< by what is drawn (the lighting model)
+};
+
+/// The configurations --configs names, in its order (all of the matrix without it).
+std::vector<BenchConfig> chosenConfigs(const BenchOptions& options)
+{
+    const std::vector<BenchConfig> matrix = defaultMatrix();
+    if (options.only.empty()) return matrix;
+    std::vector<BenchConfig> chosen;
+    for (const std::string& name : options.only) {
+        auto it = std::find_if(matrix.begin(), matrix.end(), [&](const BenchConfig& c) { return c.name == name; });
+        if (it == matrix.end()) throw UsageError("--configs: no configuration '" + name + "'");
+        chosen.push_back(*it);
+    }
+    return chosen;
+}
+
 }  // namespace
 
 int benchCommand(const std::vector<std::string>& args)
 {
     const BenchOptions options = parseBenchOptions(args);
-    std::vector<BenchConfig> matrix = defaultMatrix();
-    if (!options.only.empty()) {
-        std::vector<BenchConfig> chosen;
-        for (const std::string& name : options.only) {
-            auto it = std::find_if(matrix.begin(), matrix.end(), [&](const BenchConfig& c) { return c.name == name; });
-            if (it == matrix.end()) throw UsageError("--configs: no configuration '" + name + "'");
-            chosen.push_back(*it);
-        }
-        matrix = chosen;
-    }
+    const std::vector<BenchConfig> matrix = chosenConfigs(options);
     BenchReport report;
     report.timingNote = "frame_ms: median draw time (first draw call to glFinish) over the frames after 2 warm-up "
                         "frames; gpu_ms: GL_TIME_ELAPSED (on Mesa llvmpipe it misses rasterisation); cpu_ms: the "
                         "whole frame";
-    for (const std::string& input : options.inputs) {
+    for (const std::string& input : options.inputs)
         for (const auto& [width, height] : options.sizes) {
-            RenderOptions ro;
-            ro.input = input;
-            ro.width = width;
-            ro.height = height;
-            osg::ref_ptr<VolumeScene> scene = loadScene(ro);
-            const std::string dataset = input.empty() ? "default.osgt (ch2.nii.gz)" : osgDB::getSimpleFileName(input);
-            const std::vector<VolumeNode*> nodes = findVolumeNodes(*scene);
-            if (nodes.empty()) throw std::runtime_error(dataset + ": the scene shows no volume");
-            std::vector<std::pair<RenderSettings, osg::ref_ptr<Volume>>> original;
-            for (VolumeNode* n : nodes) original.emplace_back(n->settings, n->getVolume());
-            const PassSettings originalPass = scene->pass;
-
-            OffscreenRenderer renderer(width, height);
-            report.context = renderer.contextDescription();
-            renderer.setScene(scene.get());
-            setUpCamera(*renderer.camera(), *scene, ro, double(width) / height);
-            ReferenceCamera camera;
-            camera.view = renderer.camera()->getViewMatrix();
-            camera.projection = renderer.camera()->getProjectionMatrix();
-            camera.width = width;
-            camera.height = height;
-
-            std::map<std::string, ReferenceImage> truths;  // by what is drawn (the lighting model)
-            for (const BenchConfig& config : matrix) {
-                // The scene as the configuration draws it.
-                scene->pass = originalPass;
-                for (std::size_t k = 0; k < nodes.size(); ++k) {
-                    nodes[k]->settings = original[k].first;
-                    nodes[k]->setVolume(original[k].second.get());
-                }
-                for (const auto& [key, value] : config.settings) {
-                    try {
-                        applySetting(*scene, key, value);
-                    } catch (const SettingError& e) {
-                        throw UsageError(config.name + ": " + e.what());
-                    }
-                }
-                // Its truth: the reference of the same scene at full precision, as volren reference makes it.
-                const std::string truthKey = lightingModel(referenceScene(*scene), scene->pass.lighting);
-                if (!truths.count(truthKey)) {
-                    ReferenceOptions ref;
-                    ref.tolerance = options.tolerance;
-                    ref.gradient = options.normals;
-                    const auto start = std::chrono::steady_clock::now();
-                    const ReferenceSetup setup = referenceSetup(*scene, camera, ref);
-                    truths[truthKey] = renderReference(setup.scene, camera, setup.options);
-                    std::cerr << "volren bench: reference '" << truthKey << "' of " << dataset << " at " << width << "x"
-                              << height << " in "
-                              << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s"
-                              << std::endl;
-                }
-                if (config.precision != "native")
-                    for (VolumeNode* n : nodes) {
-                        const VoxelType type = config.precision == "8bit"    ? VoxelType::UInt8
-                                               : config.precision == "16bit" ? VoxelType::UInt16
-                                                                             : VoxelType::Float32;
-                        n->setVolume(requantise(*n->getVolume(), type).get());
-                    }
-
-                renderer.setScene(scene.get());
-                const double freeBefore = freeGpuMemoryMb(*renderer.state());
-                std::vector<double> draw, gpu, cpu;
-                for (int f = 0; f < options.frames + 2; ++f) {
-                    const FrameTiming t = renderer.renderFrame();
-                    if (!t.glErrors.empty()) throw std::runtime_error(config.name + ": GL error: " + t.glErrors.front());
-                    if (f < 2) continue;  // warm-up: programs compiled, textures uploaded
-                    draw.push_back(t.drawMs);
-                    gpu.push_back(t.gpuMs);
-                    cpu.push_back(t.cpuMs);
-                }
-                const double freeAfter = freeGpuMemoryMb(*renderer.state());
-
-                BenchRow row;
-                row.dataset = dataset;
-                row.width = width;
-                row.height = height;
-                row.config = config.name;
-                row.truth = truthKey;
-                row.frameMs = median(draw);
-                row.gpuMs = median(gpu);
-                row.cpuMs = median(cpu);
-                row.textureMb = double(renderer.volumeScene()->textureBytes()) / (1024.0 * 1024.0);
-                row.gpuMemoryMb = freeBefore >= 0.0 && freeAfter >= 0.0 ? freeBefore - freeAfter : -1.0;
-                row.error = imageError(*renderer.image(), truths[truthKey]);
-                row.keys = renderer.volumeScene()->compositionKeys();
-                std::cerr << "volren bench: " << config.name << ": " << row.frameMs << " ms, RMSE " << row.error.rmse
-                          << std::endl;
-                report.rows.push_back(row);
-            }
-            if (options.vtk) {
-                for (std::size_t k = 0; k < nodes.size(); ++k) {
-                    nodes[k]->settings = original[k].first;
-                    nodes[k]->setVolume(original[k].second.get());
-                }
-                scene->pass = originalPass;
-                const auto peer = runVtkPeer(*scene, camera, options.frames, options.out);
-                BenchRow row = peer.first;
-                row.dataset = dataset;
-                const std::string truthKey = lightingModel(referenceScene(*scene), scene->pass.lighting);
-                row.truth = truthKey;
-                if (truths.count(truthKey)) row.error = imageError(*peer.second, truths[truthKey]);
-                report.rows.push_back(row);
-            }
+            BenchRun run(input, width, height, options);
+            report.context = run.context();
+            for (const BenchConfig& config : matrix) report.rows.push_back(run.run(config));
+            if (options.vtk) report.rows.push_back(run.runVtk());
         }
-    }
     writeReport(report, options.out);
     std::cout << "volren bench: wrote " << options.out << "/bench.{md,csv,json,png}" << std::endl;
     return 0;

@@ -19,6 +19,7 @@
 #include <cmath>
 #include <fstream>
 #include <iostream>
+#include <tuple>
 
 namespace volren::app {
 
@@ -92,14 +93,30 @@ double median(std::vector<double> v)
     return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
 }
 
-}  // namespace
-
-int permutationsCommand(const std::vector<std::string>& args)
+/// The options of `volren permutations`.
+struct SweepOptions
 {
     bool list = false, compile = false, render = false, pairwise = false;
     unsigned int maxInstances = 1, maxLights = 1;
     std::size_t first = 0, count = std::size_t(-1), shard = 0, shards = 1;
     std::string statsFile, dumpDir;
+};
+
+/// "I/N" of --shard.
+std::pair<std::size_t, std::size_t> parseShard(const std::string& spec)
+{
+    const std::size_t slash = spec.find('/');
+    double a = 0, b = 0;
+    if (slash == std::string::npos || !parseFiniteNumber(spec.substr(0, slash), a) ||
+        !parseFiniteNumber(spec.substr(slash + 1), b) || b < 1 || a < 0 || a >= b || a != std::floor(a) ||
+        b != std::floor(b))
+        throw UsageError("--shard needs I/N with 0 <= I < N, got '" + spec + "'");
+    return {std::size_t(a), std::size_t(b)};
+}
+
+SweepOptions parseSweepOptions(const std::vector<std::string>& args)
+{
+    SweepOptions o;
     auto number = [&](std::size_t& i, const std::string& what) {
         double v = 0;
         if (i + 1 >= args.size() || !parseFiniteNumber(args[i + 1], v) || v < 0 || v != std::floor(v))
@@ -107,54 +124,95 @@ int permutationsCommand(const std::vector<std::string>& args)
         ++i;
         return std::size_t(v);
     };
+    auto text = [&](std::size_t& i, const std::string& what) -> const std::string& {
+        if (i + 1 >= args.size()) throw UsageError(what);
+        return args[++i];
+    };
     for (std::size_t i = 0; i < args.size(); ++i) {
-        if (args[i] == "--list") list = true;
-        else if (args[i] == "--compile") compile = true;
-        else if (args[i] == "--render") render = compile = true;
-        else if (args[i] == "--pairwise") pairwise = true;
-        else if (args[i] == "--max-instances") maxInstances = unsigned(number(i, "--max-instances"));
-        else if (args[i] == "--max-lights") maxLights = unsigned(number(i, "--max-lights"));
-        else if (args[i] == "--first") first = number(i, "--first");
-        else if (args[i] == "--count") count = number(i, "--count");
-        else if (args[i] == "--shard") {
-            const std::string spec = i + 1 < args.size() ? args[++i] : "";
-            const std::size_t slash = spec.find('/');
-            double a = 0, b = 0;
-            if (slash == std::string::npos || !parseFiniteNumber(spec.substr(0, slash), a) ||
-                !parseFiniteNumber(spec.substr(slash + 1), b) || b < 1 || a < 0 || a >= b || a != std::floor(a) ||
-                b != std::floor(b))
-                throw UsageError("--shard needs I/N with 0 <= I < N, got '" + spec + "'");
-            shard = std::size_t(a);
-            shards = std::size_t(b);
-        } else if (args[i] == "--dump") {
-            if (i + 1 >= args.size()) throw UsageError("--dump needs a folder");
-            dumpDir = args[++i];
-        } else if (args[i] == "--stats") {
-            if (i + 1 >= args.size()) throw UsageError("--stats needs a file");
-            statsFile = args[++i];
-        } else throw UsageError("permutations: unknown option '" + args[i] + "'");
+        if (args[i] == "--list") o.list = true;
+        else if (args[i] == "--compile") o.compile = true;
+        else if (args[i] == "--render") o.render = o.compile = true;
+        else if (args[i] == "--pairwise") o.pairwise = true;
+        else if (args[i] == "--max-instances") o.maxInstances = unsigned(number(i, "--max-instances"));
+        else if (args[i] == "--max-lights") o.maxLights = unsigned(number(i, "--max-lights"));
+        else if (args[i] == "--first") o.first = number(i, "--first");
+        else if (args[i] == "--count") o.count = number(i, "--count");
+        else if (args[i] == "--shard") std::tie(o.shard, o.shards) = parseShard(i + 1 < args.size() ? args[++i] : "");
+        else if (args[i] == "--dump") o.dumpDir = text(i, "--dump needs a folder");
+        else if (args[i] == "--stats") o.statsFile = text(i, "--stats needs a file");
+        else throw UsageError("permutations: unknown option '" + args[i] + "'");
     }
-    if (maxInstances > 3 || maxLights > 4) throw UsageError("--max-instances is at most 3 and --max-lights at most 4");
+    if (o.maxInstances > 3 || o.maxLights > 4) throw UsageError("--max-instances is at most 3 and --max-lights at most 4");
+    if (!o.dumpDir.empty() && !o.render) throw UsageError("--dump needs --render");
+    return o;
+}
 
-    const PermutationSpace space(ShaderFunctionRegistry::instance(), maxInstances, maxLights);
+/// Indices into `space` this run takes: the pairwise cover or all, every N-th of them for shard
+/// I/N (so each shard mixes all kinds of composition).
+std::vector<std::size_t> selection(const PermutationSpace& space, const SweepOptions& o)
+{
     std::vector<std::size_t> indices;
-    if (pairwise) indices = space.pairwiseCover();
+    if (o.pairwise) indices = space.pairwiseCover();
     else
         for (std::size_t i = 0; i < space.size(); ++i) indices.push_back(i);
-    if (shards > 1) {  // every N-th, so each shard mixes all kinds of composition
-        std::vector<std::size_t> mine;
-        for (std::size_t i = shard; i < indices.size(); i += shards) mine.push_back(indices[i]);
-        indices.swap(mine);
+    if (o.shards <= 1) return indices;
+    std::vector<std::size_t> mine;
+    for (std::size_t i = o.shard; i < indices.size(); i += o.shards) mine.push_back(indices[i]);
+    return mine;
+}
+
+/// Composes, compiles and links `composition` without drawing; returns what went wrong, if anything.
+std::string compileOnly(const Composition& composition, OffscreenRenderer& renderer, std::vector<double>& ms)
+{
+    ShaderCompositor compositor;  // of its own: a shared cache would hold every program of the sweep
+    auto program = compositor.program(composition);
+    const auto start = std::chrono::steady_clock::now();
+    program->program->compileGLObjects(*renderer.state());
+    osg::Program::PerContextProgram* pcp = program->program->getPCP(*renderer.state());
+    ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    std::string problem;
+    if (!pcp || !pcp->isLinked()) {
+        std::string log;
+        program->program->getGlProgramInfoLog(renderer.state()->getContextID(), log);
+        problem = "link failed: " + ShaderCompositor::explainLog(log, *program);
     }
-    const std::size_t end = std::min(indices.size(), count == std::size_t(-1) ? indices.size() : first + count);
-    std::cout << "volren permutations: " << space.size() << " valid compositions (instances <= " << maxInstances
-              << ", lights <= " << maxLights << ")" << (pairwise ? ", pairwise cover of " : ", selected ")
+    program->program->releaseGLObjects(renderer.state());
+    osg::flushAllDeletedGLObjects(renderer.state()->getContextID());  // no frames flush them here
+    return problem;
+}
+
+/// Draws `composition` (composed, compiled, linked at draw by llvmpipe); returns what went wrong.
+std::string renderOne(const Composition& composition, std::size_t index, VolumeScene& scene,
+                      OffscreenRenderer& renderer, const std::string& dumpDir, std::vector<double>& ms)
+{
+    scene.forcedComposition = composition;
+    const auto start = std::chrono::steady_clock::now();
+    renderer.renderFrame();
+    ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    const auto* px = reinterpret_cast<const float*>(renderer.image()->data());
+    std::string problem;
+    for (int k = 0; k < 8 * 8 * 4; ++k)
+        if (!std::isfinite(px[k])) problem = "NaN or Inf pixel";
+    if (!dumpDir.empty()) dumpComposition(dumpDir, index, scene, px);
+    return problem;
+}
+
+}  // namespace
+
+int permutationsCommand(const std::vector<std::string>& args)
+{
+    const SweepOptions o = parseSweepOptions(args);
+    const PermutationSpace space(ShaderFunctionRegistry::instance(), o.maxInstances, o.maxLights);
+    const std::vector<std::size_t> indices = selection(space, o);
+    const std::size_t first = o.first;
+    const std::size_t end = std::min(indices.size(), o.count == std::size_t(-1) ? indices.size() : first + o.count);
+    std::cout << "volren permutations: " << space.size() << " valid compositions (instances <= " << o.maxInstances
+              << ", lights <= " << o.maxLights << ")" << (o.pairwise ? ", pairwise cover of " : ", selected ")
               << indices.size() << "; this run: " << (end > first ? end - first : 0) << std::endl;
-    if (list)
+    if (o.list)
         for (std::size_t i = first; i < end; ++i) std::cout << space.at(indices[i]).key() << "\n";
-    if (!compile) return 0;
-    if (!dumpDir.empty() && !render) throw UsageError("--dump needs --render");
-    if (!dumpDir.empty() && !osgDB::makeDirectory(dumpDir)) throw std::runtime_error(dumpDir + ": cannot make folder");
+    if (!o.compile) return 0;
+    if (!o.dumpDir.empty() && !osgDB::makeDirectory(o.dumpDir)) throw std::runtime_error(o.dumpDir + ": cannot make folder");
 
     OffscreenRenderer renderer(8, 8);
     osg::ref_ptr<VolumeScene> scene = sweepScene();
@@ -162,44 +220,19 @@ int permutationsCommand(const std::vector<std::string>& args)
     renderer.setScene(scene.get());
     renderer.camera()->setViewMatrixAsLookAt(osg::Vec3d(20, -25, 15), osg::Vec3d(), osg::Vec3d(0, 0, 1));
     renderer.camera()->setProjectionMatrixAsPerspective(40, 1, 1, 100);
-    std::vector<double> compileMs;
-    std::size_t failures = 0;
+    std::vector<double> ms;
     nlohmann::json resident = nlohmann::json::array();  // resident memory every memoryEvery compositions
     nlohmann::json failed = nlohmann::json::array();
     for (std::size_t i = first; i < end; ++i) {
         const Composition composition = space.at(indices[i]);
         std::string problem;
         try {
-            if (render) {
-                scene->forcedComposition = composition;
-                const auto start = std::chrono::steady_clock::now();
-                renderer.renderFrame();  // composes, compiles, links and draws (llvmpipe compiles at draw)
-                compileMs.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-                const auto* px = reinterpret_cast<const float*>(renderer.image()->data());
-                for (int k = 0; k < 8 * 8 * 4; ++k)
-                    if (!std::isfinite(px[k])) problem = "NaN or Inf pixel";
-                if (!dumpDir.empty()) dumpComposition(dumpDir, indices[i], *scene, px);
-            } else {
-                // A compositor per composition: its cache would hold every program of the sweep.
-                ShaderCompositor compositor;
-                auto program = compositor.program(composition);
-                const auto start = std::chrono::steady_clock::now();
-                program->program->compileGLObjects(*renderer.state());
-                osg::Program::PerContextProgram* pcp = program->program->getPCP(*renderer.state());
-                compileMs.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-                if (!pcp || !pcp->isLinked()) {
-                    std::string log;
-                    program->program->getGlProgramInfoLog(renderer.state()->getContextID(), log);
-                    problem = "link failed: " + ShaderCompositor::explainLog(log, *program);
-                }
-                program->program->releaseGLObjects(renderer.state());
-                osg::flushAllDeletedGLObjects(renderer.state()->getContextID());  // no frames flush them here
-            }
+            problem = o.render ? renderOne(composition, indices[i], *scene, renderer, o.dumpDir, ms)
+                               : compileOnly(composition, renderer, ms);
         } catch (const std::exception& e) {
             problem = e.what();
         }
         if (!problem.empty()) {
-            ++failures;
             failed.push_back({{"key", composition.key()}, {"error", problem}});
             std::cout << "FAILED " << composition.key() << "\n  " << problem << std::endl;
         }
@@ -209,18 +242,18 @@ int permutationsCommand(const std::vector<std::string>& args)
             std::cout << "  " << (i - first + 1) << " done, resident " << mb << " MB" << std::endl;
         }
     }
-    std::cout << (render ? "rendered " : "compiled ") << compileMs.size() << ", failures " << failures
-              << ", median " << (render ? "frame incl. compile" : "compile+link") << " " << median(compileMs) << " ms"
-              << std::endl;
-    if (!statsFile.empty()) {
-        nlohmann::json stats = {{"valid_compositions", space.size()}, {"tested", compileMs.size()},
-                                {"failures", failures}, {"failed", failed}, {"median_ms", median(compileMs)},
-                                {"mode", render ? "render" : "compile"}, {"pairwise", pairwise},
-                                {"max_instances", maxInstances}, {"max_lights", maxLights},
+    std::cout << (o.render ? "rendered " : "compiled ") << ms.size() << ", failures " << failed.size() << ", median "
+              << (o.render ? "frame incl. compile" : "compile+link") << " " << median(ms) << " ms" << std::endl;
+    if (!o.statsFile.empty()) {
+        nlohmann::json stats = {{"valid_compositions", space.size()}, {"tested", ms.size()},
+                                {"failures", failed.size()}, {"failed", failed}, {"median_ms", median(ms)},
+                                {"mode", o.render ? "render" : "compile"}, {"pairwise", o.pairwise},
+                                {"max_instances", o.maxInstances}, {"max_lights", o.maxLights},
+                                {"shard", o.shard}, {"shards", o.shards},
                                 {"resident", resident}, {"peak_resident_mb", peakResidentMb()}};
-        std::ofstream(statsFile) << stats.dump(2) << "\n";
+        std::ofstream(o.statsFile) << stats.dump(2) << "\n";
     }
-    return failures == 0 ? 0 : 1;
+    return failed.empty() ? 0 : 1;
 }
 
 }  // namespace volren::app
