@@ -4,6 +4,8 @@
 
 #include <volume_model/ClipPlaneNode.h>
 
+#include <osg/LightSource>
+
 #include <cmath>
 #include <random>
 
@@ -152,6 +154,41 @@ TEST_F(ClosedForm, TricubicBSplineReproducesALinearRamp)
             EXPECT_NEAR(img.at(px, 8).r(), value / (n - 1), 2e-4) << reconstruction << " pixel " << px;
         }
     }
+}
+
+TEST_F(ClosedForm, SurfaceLightingMixesUnlitAndLitByTheGradientMagnitude)
+{
+    // lighting_surface = mix(unlit, lit, w) with w = 1 - exp(-|g| / (0.05 G)), G the gradient of a
+    // jump across the TF window within one voxel. Values rise by 10 per voxel along x over the
+    // window 0..255: |g| = 10, G = 255, w = 1 - exp(-10 / 12.75). One colour and opacity for every
+    // value, so every sample of a ray has the same colour: the pixel mixes as its samples do.
+    // A homogeneous volume (zero gradient) stays exactly unlit.
+    osg::ref_ptr<Volume> ramp = new Volume;
+    ramp->allocate(VoxelType::UInt8, {16, 8, 8});
+    for (std::size_t i = 0; i < ramp->voxelCount(); ++i) ramp->data()[i] = std::uint8_t(20 + 10 * (i % 16));
+    ramp->dirty();
+    const osg::Vec4 albedo(0.8f, 0.5f, 0.25f, 0.1f);
+    auto pixel = [&](Volume* volume, const char* shading) {
+        auto node = volumeNode(volume, constantTransferFunction(albedo).get());
+        node->settings.functions["Shading"] = shading;
+        node->settings.earlyTerminationThreshold = 1.0;
+        osg::ref_ptr<VolumeScene> scene = new VolumeScene;
+        scene->addChild(node.get());
+        osg::ref_ptr<osg::LightSource> light = new osg::LightSource;
+        light->getLight()->setPosition(osg::Vec4(-1, 0, 1, 0));
+        scene->addChild(light.get());
+        return renderOrthoFromPlusZ(scene.get(), 16, 16, 16.0).at(8, 8);
+    };
+    const double w = -std::expm1(-10.0 / (0.05 * 255.0));
+    const osg::Vec4 unlit = pixel(ramp.get(), "null"), lit = pixel(ramp.get(), "lighting");
+    const osg::Vec4 surface = pixel(ramp.get(), "lighting_surface");
+    ASSERT_GT(std::abs(lit.r() - unlit.r()), 0.02f) << "the light must change the colour for the test to see w";
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(surface[c], (1.0 - w) * unlit[c] + w * lit[c], 2e-3) << "channel " << c;
+    EXPECT_NEAR(surface.a(), lit.a(), 1e-6);
+
+    osg::ref_ptr<Volume> flat = constantVolume(VoxelType::UInt8, {16, 8, 8}, 100);
+    const osg::Vec4 flatSurface = pixel(flat.get(), "lighting_surface"), flatUnlit = pixel(flat.get(), "null");
+    for (int c = 0; c < 4; ++c) EXPECT_NEAR(flatSurface[c], flatUnlit[c], 1e-6) << "zero gradient: unlit, channel " << c;
 }
 
 }  // namespace
