@@ -88,7 +88,7 @@ int viewCommand(const std::vector<std::string>& args)
                                                           node->getVolume());
         std::map<std::string, std::vector<std::string>> choices;
         for (const char* slot : {"RayTraversal", "Reconstruction", "Gradient", "Illumination"})
-            choices[slot] = ShaderFunctionRegistry::instance().names(slot);
+            choices[slot] = root->policy().choosable(slot);  // default first
         panel = std::make_unique<RenderSettingsPanel>(node, choices);
         overlay = new ImGuiOverlay([&editor, &panel] {
             ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
