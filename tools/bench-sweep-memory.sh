@@ -11,7 +11,7 @@ build=${2:-"$here/build"}
 stats=$(mktemp --suffix=.json)
 # Every 37th composition of the space, so the run mixes all kinds of composition.
 MESA_SHADER_CACHE_DISABLE=true GALLIVM_PERF=nopt \
-  "$build/bin/volren" permutations --render --shard 5/37 --count "$count" --stats "$stats" > /dev/null
+  LP_NUM_THREADS=0 LP_NATIVE_VECTOR_WIDTH=128 "$build/bin/volren" permutations --render --shard 5/37 --count "$count" --stats "$stats" > /dev/null
 python3 - "$stats" <<'PY'
 import json, sys
 s = json.load(open(sys.argv[1]))
