@@ -63,14 +63,17 @@ std::vector<BenchConfig> defaultMatrix()
 }
 
 /// What a reference draws, so configurations that draw the same picture share one: each
-/// volume's lighting model as the policy chose it ("lit:blinn_phong", "unlit").
+/// volume's lighting model as the policy chose it ("lit:blinn_phong", "lit:lambert/lighting_surface",
+/// "unlit").
 std::string lightingModel(const ReferenceScene& scene, bool lighting)
 {
     std::string key;
     for (const auto& placed : scene.volumes) {
         const auto shading = placed.choice.find("Shading");
         const bool lit = lighting && !scene.lights.empty() && shading != placed.choice.end() && shading->second != "null";
-        key += (key.empty() ? "" : "+") + (lit ? "lit:" + placed.choice.at("Illumination") : std::string("unlit"));
+        std::string model = lit ? "lit:" + placed.choice.at("Illumination") : std::string("unlit");
+        if (lit && shading->second != "lighting") model += "/" + shading->second;  // another lit picture
+        key += (key.empty() ? "" : "+") + model;
     }
     return key;
 }

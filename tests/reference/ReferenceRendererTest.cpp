@@ -139,7 +139,7 @@ TEST(ReferenceRenderer, HomogeneousSphereFollowsItsChordLengthToOneInAMillion)
         }
 }
 
-TEST(ReferenceRenderer, LitRampFollowsTheBlinnPhongClosedForm)
+TEST(ReferenceRenderer, LitRampFollowsTheBlinnPhongAndSurfaceClosedForms)
 {
     // Values rising along x (10 per voxel), one colour and opacity for all of them: the normal is
     // -x everywhere (from dense to empty; both gradient conventions agree inside), a directional
@@ -178,6 +178,16 @@ TEST(ReferenceRenderer, LitRampFollowsTheBlinnPhongClosedForm)
             const double lit = double(albedo[c]) * (0.2 + 0.9 * nl) + 0.9 * highlight;
             EXPECT_NEAR(img.at(8, 8, c), lit * alpha, 1e-6) << "channel " << c;
         }
+        // lighting_surface: the mix of the two by w = 1 - exp(-|g| / (0.05 window / spacing)),
+        // |g| = 10 per unit over the window 0..255.
+        node->settings.functions["Shading"] = "lighting_surface";
+        const ReferenceImage surface = renderReference(ReferenceScene::collect(*root), orthoFromPlusZ(16, 16.0), options);
+        const double w = -std::expm1(-10.0 / (0.05 * 255.0));
+        for (int c = 0; c < 3; ++c) {
+            const double lit = double(albedo[c]) * (0.2 + 0.9 * nl) + 0.9 * highlight;
+            EXPECT_NEAR(surface.at(8, 8, c), ((1.0 - w) * double(albedo[c]) + w * lit) * alpha, 1e-6) << "surface " << c;
+        }
+        node->settings.functions["Shading"] = "lighting";
         options.lighting = false;
         const ReferenceImage unlit = renderReference(ReferenceScene::collect(*root), orthoFromPlusZ(16, 16.0), options);
         EXPECT_NEAR(unlit.at(8, 8, 0), double(albedo.r()) * alpha, 1e-6) << "lighting off: the TF colour";

@@ -188,6 +188,7 @@ TEST(CompositionPolicy, ResolvesNamesAliasesAndOnOff)
     EXPECT_EQ(policy.resolve("Jitter", "on"), "hash");
     EXPECT_EQ(policy.resolve("Gradient", "on"), "central");
     EXPECT_EQ(policy.resolve("Shading", "off"), "null");
+    EXPECT_EQ(policy.resolve("ClipRay", "on"), "") << "no implementation is what 'on' means there";
     EXPECT_EQ(policy.resolve("RayTraversal", "sum_of_media"), "") << "set-only implementations are not choosable";
     EXPECT_EQ(policy.resolve("Jitter", "sparkle"), "");
     EXPECT_EQ(policy.choosable("Jitter").front(), "hash") << "default first";

@@ -19,7 +19,7 @@ namespace {
 glm::dvec3 toGlm(const osg::Vec3d& v) { return {v.x(), v.y(), v.z()}; }
 
 /// How a medium's samples are lit (the node's Shading and Illumination choices).
-enum class Shading { None, Lighting, Threshold };
+enum class Shading { None, Lighting, Threshold, Surface };
 enum class Illumination { None, Lambert, BlinnPhong, CookTorrance };
 
 /// The trilinear cell of a texture coordinate along each axis: the two voxel indices, their
@@ -130,7 +130,12 @@ struct Medium
             if (!(length > 0.0)) continue;
             colour += lightColour * illuminate(normal, view, toLight / length, albedo);
         }
-        return colour;
+        if (shading != Shading::Surface) return colour;
+        // lighting_surface: lit by w = 1 - exp(-|g| / (0.05 G)), G = the TF window per smallest spacing.
+        const double surfaceGradient = 0.05 * (domainMax - domainMin) / unitLength;
+        double w = surfaceGradient > 0.0 ? -std::expm1(-glm::length(gradient) / surfaceGradient) : 1.0;
+        if (!(w >= 0.0)) w = 1.0;  // a non-finite gradient: lit, as its normal is
+        return albedo + w * (colour - albedo);
     }
 
     /// Light reflected towards `v` from a unit light from `l` by a surface of normal `n`.
@@ -190,6 +195,7 @@ void setShading(Medium& m, const ReferenceScene::Placed& placed, bool lit)
     if (shading == "null") m.shading = Shading::None;
     else if (shading == "lighting") m.shading = Shading::Lighting;
     else if (shading == "lighting_threshold") m.shading = Shading::Threshold;
+    else if (shading == "lighting_surface") m.shading = Shading::Surface;
     else throw std::invalid_argument("reference: no model for Shading '" + shading + "' (volume '" + node.getName() + "')");
     if (illumination == "null") m.illumination = Illumination::None;
     else if (illumination == "lambert") m.illumination = Illumination::Lambert;

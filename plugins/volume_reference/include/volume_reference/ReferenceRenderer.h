@@ -55,7 +55,7 @@ struct ReferenceImage
 /// not, add their media: extinction and emission sum) seen by `camera`. Rays run from the near
 /// plane to the far plane, so a camera inside a volume sees what is in front of it.
 /// With lights, each sample's emission is its TF colour lit as the node's settings say (Shading
-/// null, lighting or lighting_threshold; Illumination null, lambert, blinn_phong or
+/// null, lighting, lighting_threshold or lighting_surface; Illumination null, lambert, blinn_phong or
 /// cook_torrance; ambient, specular, shininess, roughness), the normal from
 /// ReferenceOptions::gradient (facing the viewer; the view direction where the gradient is
 /// zero), and no shadows. Other choices throw std::invalid_argument.

@@ -62,6 +62,9 @@ public:
     /// a lit Shading, a Shading needs a Gradient, ...); what a setting's "on" means.
     static std::string neededImplementation(const std::string& slot);
 
+    /// How a Shading implementation uses lights (Optional when its traits are unknown).
+    static LightUse lightUseOf(const ShaderFunction& shading);
+
     /// The composition for a volume with node `settings` given the `offer` and the `pass`.
     ChosenComposition choose(const RenderSettings& settings, const SceneOffer& offer, const PassSettings& pass) const;
     /// The clips the template instances of a given (forced) composition bind: each instance takes

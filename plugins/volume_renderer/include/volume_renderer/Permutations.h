@@ -7,8 +7,8 @@
 
 namespace volren {
 
-/// The space of valid compositions: the cross product of every slot's choosable implementations
-/// (CompositionPolicy::choosable), clip instances 0..maxInstances per template slot and
+/// The space of valid compositions: the cross product of every slot's implementations (the
+/// registry's names, in name order, so indices stay put; not the multi-volume ones), clip instances 0..maxInstances per template slot and
 /// 0..maxLights lights, minus what CompositionPolicy::isValid rejects. Adding an implementation
 /// to the registry grows the space; nothing here names one.
 class PermutationSpace

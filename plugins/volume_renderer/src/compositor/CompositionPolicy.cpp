@@ -44,6 +44,12 @@ std::string lower(std::string s)
 
 }  // namespace
 
+LightUse CompositionPolicy::lightUseOf(const ShaderFunction& shading)
+{
+    // Implementations of unknown traits (shader-folder additions) may or may not loop over lights.
+    return shading.traits.calls ? shading.traits.lights : LightUse::Optional;
+}
+
 std::string CompositionPolicy::defaultImplementation(const std::string& slot)
 {
     static const std::map<std::string, std::string> defaults = {{"RaySetup", "box_intersection"},
@@ -126,8 +132,7 @@ void CompositionPolicy::chooseLighting(ChosenComposition& out, const RenderSetti
     c.choice["Shading"] = shading;
     c.choice["Gradient"] = gradient;
     c.choice["GradientInput"] = wish.chosen("GradientInput", gradient != none ? neededImplementation("GradientInput") : none);
-    // Implementations of unknown traits (shader-folder additions) light like a lit shading.
-    const LightUse use = shader && shader->traits.calls ? shader->traits.lights : LightUse::Required;
+    const LightUse use = shader ? lightUseOf(*shader) : LightUse::Optional;
     c.lightCount = use == LightUse::Optional || (use == LightUse::Required && illumination != none) ? lights : 0;
     if (shading == none) c.lightCount = 0;
 }
@@ -201,7 +206,10 @@ std::string CompositionPolicy::resolve(const std::string& slot, const std::strin
 {
     const std::string v = lower(value);
     if (v == "off" || v == "none" || v == "0" || v == "false") return none;
-    if (v == "on" || v == "1" || v == "true") return neededImplementation(slot);
+    if (v == "on" || v == "1" || v == "true") {  // a slot whose needed implementation is null has no "on"
+        const std::string needed = neededImplementation(slot);
+        return needed == none ? std::string() : needed;
+    }
     for (const std::string& name : _registry.names(slot)) {
         if (name == v) return name;
         const ShaderFunction* f = _registry.find(slot, name);

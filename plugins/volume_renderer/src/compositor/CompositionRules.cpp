@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <stdexcept>
 #include <unordered_map>
 
 namespace volren {
@@ -61,6 +62,7 @@ struct CompositionPolicy::Rules
 
 CompositionPolicy::CompositionPolicy(const ShaderFunctionRegistry& registry) : _registry(registry)
 {
+    if (slots().size() > 8 * sizeof(Mask)) throw std::logic_error("CompositionPolicy: more slots than a rule mask holds");
     auto rules = std::make_shared<Rules>();
     for (const SlotInfo& s : slots())
         for (const std::string& name : registry.allNames(s.name)) {
@@ -112,7 +114,7 @@ bool CompositionPolicy::check(const SlotFunctions& chosen, unsigned int lightCou
                 });
     }
     const ShaderFunction* shading = chosen[rules.shading].front();
-    const LightUse use = (reached & (Mask(1) << rules.shading)) ? shading->traits.lights : LightUse::None;
+    const LightUse use = (reached & (Mask(1) << rules.shading)) ? lightUseOf(*shading) : LightUse::None;
     if (use == LightUse::None && lightCount > 0)
         return reject([&] { return "Shading/" + shading->name + " uses no lights"; });
     if (use == LightUse::Required && lightCount == 0)

@@ -51,8 +51,11 @@ ChosenComposition CompositionPolicy::setComposition(std::vector<ChosenCompositio
     // opaque geometry; everything a sample needs comes from the members' compositions.
     ChosenComposition set;
     set.composition = bare(defaultImplementation("RaySetup"));
-    for (const std::string& name : _registry.allNames("RayTraversal"))
-        if (_registry.find("RayTraversal", name)->traits.multiVolume) set.composition.choice["RayTraversal"] = name;
+    for (const std::string& name : _registry.allNames("RayTraversal"))  // the first in name order
+        if (_registry.find("RayTraversal", name)->traits.multiVolume) {
+            set.composition.choice["RayTraversal"] = name;
+            break;
+        }
     if (!members.empty()) set.composition.choice["Jitter"] = members.front().composition.functionFor("Jitter");
     bool depth = false;
     for (ChosenComposition& m : members) {
