@@ -31,8 +31,10 @@ vec3 volren_shade(vec3 pos, vec3 viewDir, vec4 classified);
 // ClipPosition (template over clip shapes): true where the sample at pos is clipped away.
 bool volren_clipPosition(vec3 pos);
 
-// Acceleration: the next ray parameter >= t worth sampling (empty-space skipping).
-float volren_skip(vec3 origin, vec3 dir, float t, float tFar);
+// Acceleration: empty-space skipping. A ray parameter t' >= t such that no sample in [t, t')
+// may be visible (t itself when the sample at t may be; >= tFar when none before tFar may be).
+// The answer for t holds for samples up to tRecheck, so traversals ask again only past it.
+float volren_skip(vec3 origin, vec3 dir, float t, float tFar, out float tRecheck);
 
 // Jitter: offset of the first sample as a fraction of one step, in [0,1).
 float volren_jitter(vec2 fragCoord);

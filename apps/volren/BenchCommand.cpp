@@ -56,6 +56,8 @@ std::vector<BenchConfig> defaultMatrix()
     add("illumination", {"lambert", "cook_torrance"});
     add("lighting", {"off"});
     add("earlyTermination", {"0.99", "1"});
+    add("acceleration", {"null"});  // empty-space skipping off: same image, the cost of marching all
+    add("macrocellSize", {"4", "16"});
     add("jitter", {"null", "texture"});
     add("classification", {"premultiplied"});
     for (const char* p : {"8bit", "16bit", "float"}) m.push_back({std::string("precision=") + p, {}, p});

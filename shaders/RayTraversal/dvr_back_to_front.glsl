@@ -1,5 +1,6 @@
 // RayTraversal/dvr_back_to_front: the same segments and samples as front-to-back, composited
 // from the far end (colour = c_i * a_i + (1 - a_i) * colour); no early termination possible.
+// The Acceleration leaps (along the reversed ray) over samples it proves transparent.
 // vec4 volren_traverse(vec3 origin, vec3 dir, float tNear, float tFar, float jitter, out float tHit)
 vec4 volren_traverse(vec3 origin, vec3 dir, float tNear, float tFar, float jitter, out float tHit)
 {
@@ -11,19 +12,35 @@ vec4 volren_traverse(vec3 origin, vec3 dir, float tNear, float tFar, float jitte
     precise float depth = 0.0;
     precise float compensation = 0.0;
     vec3 color = vec3(0.0);
-    for (int i = m.count - 1; i >= 0; --i) {
+    float tRecheck = 1e30;  // skipping runs along the reversed ray, parameter -t
+    for (int i = m.count - 1; i >= 0;) {
+        int next = i - 1;
         float segStart = volren_segmentStart(m, i, tNear, tFar);
         float segEnd = volren_segmentEnd(m, i, tFar);
         float lenT = segEnd - segStart;
-        if (!(lenT > 0.0)) continue;
-        vec3 p = origin + dir * (0.5 * (segStart + segEnd));
-        if (volren_clipPosition(p)) continue;
-        vec4 c = volren_classify(volren_fetchScalar(p));
-        float dTau = volren_opticalDepth(c.a, lenT * m.worldPerT / volren_referenceStep);
-        if (!(dTau > 0.0)) continue;
-        float a = volren_opacityFromDepth(dTau);
-        color = a * volren_shade(p, viewDir, c) + (1.0 - a) * color;
-        volren_addDepth(dTau, depth, compensation);
+        float tMid = 0.5 * (segStart + segEnd);
+        bool visible = lenT > 0.0;
+        if (visible && tMid <= tRecheck) {  // empty-space skipping: leap back to the next sample that may show
+            float reversedRecheck;
+            float tNext = -volren_skip(origin, -dir, -tMid, -tNear, reversedRecheck);
+            tRecheck = -reversedRecheck;
+            if (tNext <= tNear) break;
+            if (tNext < tMid) {
+                next = min(next, volren_segmentUpTo(m, tNext));
+                visible = false;
+            }
+        }
+        vec3 p = origin + dir * tMid;
+        if (visible && !volren_clipPosition(p)) {
+            vec4 c = volren_classify(volren_fetchScalar(p));
+            float dTau = volren_opticalDepth(c.a, lenT * m.worldPerT / volren_referenceStep);
+            if (dTau > 0.0) {
+                float a = volren_opacityFromDepth(dTau);
+                color = a * volren_shade(p, viewDir, c) + (1.0 - a) * color;
+                volren_addDepth(dTau, depth, compensation);
+            }
+        }
+        i = next;
     }
     return vec4(color, volren_opacityFromDepth(depth));
 }

@@ -1,5 +1,6 @@
 // RayTraversal/dvr_front_to_back: emission-absorption compositing, front to back, with early
-// termination once the accumulated opacity reaches the threshold.
+// termination once the accumulated opacity reaches the threshold; the Acceleration leaps over
+// samples it proves transparent.
 // vec4 volren_traverse(vec3 origin, vec3 dir, float tNear, float tFar, float jitter, out float tHit)
 // Segments (march.glsl) tile [tNear, tFar] exactly and are sampled at their midpoints, so a
 // homogeneous medium gives exp(-sigma*L) at any step.
@@ -14,22 +15,33 @@ vec4 volren_traverse(vec3 origin, vec3 dir, float tNear, float tFar, float jitte
     precise float depth = 0.0;
     precise float compensation = 0.0;
     vec3 color = vec3(0.0);
-    for (int i = 0; i < m.count; ++i) {
+    float tRecheck = -1e30;
+    for (int i = 0; i < m.count;) {
+        int next = i + 1;
         float segStart = volren_segmentStart(m, i, tNear, tFar);
         float segEnd = volren_segmentEnd(m, i, tFar);
         float lenT = segEnd - segStart;
-        if (lenT > 0.0 && volren_skip(origin, dir, segStart, tFar) <= segStart) {
-            vec3 p = origin + dir * (0.5 * (segStart + segEnd));
-            if (!volren_clipPosition(p)) {
-                vec4 c = volren_classify(volren_fetchScalar(p));
-                float dTau = volren_opticalDepth(c.a, lenT * m.worldPerT / volren_referenceStep);
-                if (dTau > 0.0) {
-                    color += exp(-depth) * volren_opacityFromDepth(dTau) * volren_shade(p, viewDir, c);
-                    volren_addDepth(dTau, depth, compensation);
-                    if (depth >= volren_terminationDepth) break;
-                }
+        float tMid = 0.5 * (segStart + segEnd);
+        bool visible = lenT > 0.0;
+        if (visible && tMid >= tRecheck) {  // empty-space skipping: leap to the next sample that may show
+            float tNext = volren_skip(origin, dir, tMid, tFar, tRecheck);
+            if (tNext >= tFar) break;
+            if (tNext > tMid) {
+                next = max(next, volren_segmentFrom(m, tNext));
+                visible = false;
             }
         }
+        vec3 p = origin + dir * tMid;
+        if (visible && !volren_clipPosition(p)) {
+            vec4 c = volren_classify(volren_fetchScalar(p));
+            float dTau = volren_opticalDepth(c.a, lenT * m.worldPerT / volren_referenceStep);
+            if (dTau > 0.0) {
+                color += exp(-depth) * volren_opacityFromDepth(dTau) * volren_shade(p, viewDir, c);
+                volren_addDepth(dTau, depth, compensation);
+                if (depth >= volren_terminationDepth) break;
+            }
+        }
+        i = next;
     }
     return vec4(color, volren_opacityFromDepth(depth));
 }

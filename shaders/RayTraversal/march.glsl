@@ -31,6 +31,17 @@ float volren_segmentStart(VolrenMarch m, int i, float tNear, float tFar)
     return i == 0 ? tNear : volren_segmentEnd(m, i - 1, tFar);
 }
 
+// Empty-space skipping's leaps: the first segment whose midpoint is at or after t, and the last
+// whose midpoint is at or before it (both clamped to [-1, count]).
+int volren_segmentFrom(VolrenMarch m, float t)
+{
+    return int(clamp(ceil((t - m.firstEnd) / m.stepT + 0.5), -1.0, float(m.count)));
+}
+int volren_segmentUpTo(VolrenMarch m, float t)
+{
+    return int(clamp(floor((t - m.firstEnd) / m.stepT + 0.5), -1.0, float(m.count)));
+}
+
 // Adds a segment's optical depth dTau to depth, Kahan-compensated (tiny depths stay exact
 // along rays of millions of samples).
 void volren_addDepth(float dTau, inout float depth, inout float compensation)

@@ -32,7 +32,7 @@ TEST(CompositionPolicy, LightsBringLitShadingAGradientAndNothingElse)
 {
     const CompositionPolicy policy;
     const Composition unlit = policy.choose({}, offerWith(0), {}).composition;
-    for (const char* slot : {"Shading", "Illumination", "Gradient", "GradientInput", "Shadowing", "Acceleration"})
+    for (const char* slot : {"Shading", "Illumination", "Gradient", "GradientInput", "Shadowing"})
         EXPECT_EQ(unlit.functionFor(slot), "null") << slot;
     EXPECT_EQ(unlit.functionFor("RayTraversal"), "dvr_front_to_back");
     EXPECT_EQ(unlit.functionFor("Jitter"), "hash");
@@ -150,6 +150,29 @@ TEST(CompositionPolicy, ASetOwnsTheRayAndTheDepthClip)
     EXPECT_EQ(set.composition.members[0].lightCount, 1u);
 }
 
+TEST(CompositionPolicy, EmptySpaceSkippingIsTheDefaultWhereverItCanWork)
+{
+    const CompositionPolicy policy;
+    auto acceleration = [&](std::map<std::string, std::string> functions, std::size_t lights = 0) {
+        RenderSettings s;
+        s.functions = std::move(functions);
+        const Composition c = policy.choose(s, offerWith(lights), {}).composition;
+        EXPECT_EQ(policy.invalidReason(c), "") << c.key();
+        return c.functionFor("Acceleration");
+    };
+    EXPECT_EQ(acceleration({}), "occupancy");
+    EXPECT_EQ(acceleration({}, 2), "occupancy") << "lit";
+    EXPECT_EQ(acceleration({{"RayTraversal", "dvr_back_to_front"}}), "occupancy");
+    for (const char* classification : {"tf1d", "premultiplied", "threshold", "null"})
+        EXPECT_EQ(acceleration({{"Classification", classification}}), "occupancy") << classification;
+    for (const char* traversal : {"mip", "minip", "average", "mida", "isosurface"})
+        EXPECT_EQ(acceleration({{"RayTraversal", traversal}}), "null") << traversal << " does not leap";
+    EXPECT_EQ(acceleration({{"Reconstruction", "null"}}), "null") << "a constant fetch says nothing of the voxels";
+    RenderSettings off;
+    off.functions["Acceleration"] = "null";
+    EXPECT_EQ(policy.choose(off, offerWith(0), {}).composition.functionFor("Acceleration"), "null");
+}
+
 TEST(CompositionPolicy, InvalidCompositionsAreRejectedWithTheirReason)
 {
     const CompositionPolicy policy;
@@ -164,7 +187,11 @@ TEST(CompositionPolicy, InvalidCompositionsAreRejectedWithTheirReason)
     };
     EXPECT_EQ(reason({}), "");
     EXPECT_NE(reason({{"RayTraversal", "null"}}).find("nothing marches"), std::string::npos);
-    EXPECT_EQ(reason({{"RayTraversal", "null"}, {"Reconstruction", "null"}, {"Classification", "null"}, {"Jitter", "null"}}),
+    EXPECT_EQ(reason({{"RayTraversal", "null"},
+                      {"Reconstruction", "null"},
+                      {"Classification", "null"},
+                      {"Jitter", "null"},
+                      {"Acceleration", "null"}}),
               "");
     EXPECT_NE(reason({{"GradientInput", "scalar"}}).find("nothing calls GradientInput"), std::string::npos);
     EXPECT_NE(reason({{"Shading", "lighting"}, {"Illumination", "lambert"}}).find("needs a light"), std::string::npos);
@@ -172,7 +199,11 @@ TEST(CompositionPolicy, InvalidCompositionsAreRejectedWithTheirReason)
     EXPECT_NE(reason({{"Illumination", "lambert"}}).find("nothing calls Illumination"), std::string::npos);
     EXPECT_NE(reason({}, 1).find("uses no lights"), std::string::npos);
     EXPECT_NE(reason({{"Gradient", "central"}}).find("nothing calls Gradient"), std::string::npos);
-    EXPECT_NE(reason({{"RayTraversal", "gmip"}, {"Reconstruction", "null"}}).find("needs a real Gradient"), std::string::npos);
+    EXPECT_NE(reason({{"RayTraversal", "gmip"}, {"Reconstruction", "null"}, {"Acceleration", "null"}}).find("needs a real Gradient"),
+              std::string::npos);
+    EXPECT_NE(reason({{"Reconstruction", "null"}}).find("needs a Reconstruction bounded by its voxels"), std::string::npos);
+    EXPECT_EQ(reason({{"Reconstruction", "null"}, {"Acceleration", "null"}}), "");
+    EXPECT_NE(reason({{"RayTraversal", "mip"}}).find("nothing calls Acceleration"), std::string::npos);
     EXPECT_NE(reason({{"RayTraversal", "sum_of_media"}}).find("only in multi-volume sets"), std::string::npos);
     EXPECT_NE(reason({{"Jitter", "sparkle"}}).find("no implementation Jitter/sparkle"), std::string::npos);
     EXPECT_NE(reason({}, 0, {{"ClipRay", {"depth", "depth"}}}).find("may appear once"), std::string::npos);

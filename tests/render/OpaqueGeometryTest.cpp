@@ -229,11 +229,11 @@ TEST_F(OpaqueGeometry, TransparentGeometryAndEmptyScenesNeedNoDepthTexture)
         osg::ref_ptr<VolumeScene> scene = sceneWith(geometry);
         renderOrthoFromPlusZ(scene.get(), 16, 16, 20.0);
         EXPECT_NE(scene->compositionKeys()[0].find("ClipRay=[];"), std::string::npos) << scene->compositionKeys()[0];
-        EXPECT_EQ(scene->auxiliaryTextureCount(), 2u) << "volume and TF table only";
+        EXPECT_EQ(scene->auxiliaryTextureCount(), 3u) << "volume, TF table and occupancy grid only";
     }
     osg::ref_ptr<VolumeScene> opaque = sceneWith(flatSquare({0, 0, 0}, 4.0f, osg::Vec4(1, 1, 1, 1)).get());
     renderOrthoFromPlusZ(opaque.get(), 16, 16, 20.0);
-    EXPECT_EQ(opaque->auxiliaryTextureCount(), 3u) << "plus the depth texture";
+    EXPECT_EQ(opaque->auxiliaryTextureCount(), 4u) << "plus the depth texture";
 }
 
 TEST_F(OpaqueGeometry, ClipRayForcedNullDrawsTheVolumeOverTheGeometry)

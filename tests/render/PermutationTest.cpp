@@ -53,7 +53,7 @@ TEST(Permutations, ValidityRulesRejectContradictions)
     mipLit.choice["RayTraversal"] = "mip";
     EXPECT_FALSE(CompositionPolicy().isValid(mipLit));
     Composition gmip;
-    gmip.choice = {{"RayTraversal", "gmip"}, {"Gradient", "central9"}, {"GradientInput", "alpha"}};
+    gmip.choice = {{"RayTraversal", "gmip"}, {"Gradient", "central9"}, {"GradientInput", "alpha"}, {"Acceleration", "null"}};
     EXPECT_TRUE(CompositionPolicy().isValid(gmip));
     gmip.choice["Gradient"] = "null";
     gmip.choice["GradientInput"] = "null";

@@ -106,15 +106,20 @@ TEST_F(SceneAnalysis, SettingsChooseImplementationsAndForceNullWins)
 TEST_F(SceneAnalysis, OnlyTheAuxiliaryDataAnImplementationNeedsIsAllocated)
 {
     keyAfterFrame();
-    EXPECT_EQ(scene->auxiliaryTextureCount(), 2u) << "volume texture + 1D TF table";
+    EXPECT_EQ(scene->auxiliaryTextureCount(), 3u) << "volume texture + 1D TF table + occupancy grid";
     node->settings.functions["Classification"] = "null";
     keyAfterFrame();
     keyAfterFrame();
     keyAfterFrame();
-    EXPECT_EQ(scene->auxiliaryTextureCount(), 1u) << "no TF table without TF classification";
+    EXPECT_EQ(scene->auxiliaryTextureCount(), 2u) << "no TF table without TF classification";
     node->settings.functions["Classification"] = "premultiplied";
     keyAfterFrame();
-    EXPECT_EQ(scene->auxiliaryTextureCount(), 2u) << "volume texture + premultiplied table";
+    EXPECT_EQ(scene->auxiliaryTextureCount(), 3u) << "volume texture + premultiplied table + occupancy grid";
+    node->settings.functions["Acceleration"] = "null";
+    keyAfterFrame();
+    keyAfterFrame();
+    keyAfterFrame();
+    EXPECT_EQ(scene->auxiliaryTextureCount(), 2u) << "no occupancy grid without skipping";
 }
 
 TEST_F(SceneAnalysis, TheSameSceneComposedTwiceReusesTheProgram)

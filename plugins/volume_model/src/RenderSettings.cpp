@@ -67,7 +67,7 @@ bool RenderSettings::operator==(const RenderSettings& o) const
            same(earlyTerminationThreshold, o.earlyTerminationThreshold) && same(isoValue, o.isoValue) &&
            same(shadingThreshold, o.shadingThreshold) && same(ambient, o.ambient) && same(specular, o.specular) &&
            same(shininess, o.shininess) && same(roughness, o.roughness) && same(threshold, o.threshold) &&
-           debugView == o.debugView &&
+           debugView == o.debugView && macrocellSize == o.macrocellSize &&
            functions == o.functions && forceNull == o.forceNull;
 }
 
@@ -86,6 +86,7 @@ std::vector<std::pair<std::string, std::string>> RenderSettings::keys()
         {"sampleFactor", "step as a factor of the smallest voxel spacing"},
         {"sampleDistance", "step in world units (0 = use sampleFactor)"},
         {"earlyTermination", "opacity at which front-to-back marching stops (1 = never)"},
+        {"macrocellSize", "edge of the empty-space-skipping macrocells in voxels (1-1024)"},
         {"isoValue", "isosurface data value (empty = the TF's first opaque value)"},
         {"shadingThreshold", "opacity below which lighting_threshold shading leaves samples unlit"},
         {"ambient", "ambient light fraction"},
@@ -111,6 +112,7 @@ std::string RenderSettings::get(const std::string& key) const
     if (k == "samplefactor") return number(sampleDistanceFactor);
     if (k == "sampledistance") return number(sampleDistance);
     if (k == "earlytermination") return number(earlyTerminationThreshold);
+    if (k == "macrocellsize") return std::to_string(macrocellSize);
     if (k == "isovalue") return std::isnan(isoValue) ? std::string() : number(isoValue);
     if (k == "shadingthreshold") return number(shadingThreshold);
     if (k == "ambient") return number(ambient);
@@ -182,6 +184,12 @@ bool RenderSettings::set(const std::string& key, const std::string& value, std::
         return error = "debugView must be one of scalar, position, classification, gradient, normal, view, light; got '" +
                        value + "'",
                false;
+    }
+    if (k == "macrocellsize") {
+        if (!parseFiniteNumber(value, v) || v != std::floor(v) || v < 1.0 || v > 1024.0)
+            return error = "macrocellSize must be a whole number of voxels in [1, 1024], got '" + value + "'", false;
+        macrocellSize = int(v);
+        return true;
     }
     if (k == "isovalue") {
         if (value.empty()) return isoValue = std::numeric_limits<double>::quiet_NaN(), true;

@@ -19,6 +19,8 @@ struct RenderSettings
     double sampleDistance = 0.0;
     /// Front-to-back marching stops once accumulated opacity reaches this (1 = never early).
     double earlyTerminationThreshold = 0.95;
+    /// Edge of the empty-space-skipping macrocells, in voxels (Acceleration occupancy).
+    int macrocellSize = 8;
     /// Data value of the isosurface (isosurface traversal); NaN = the TF's first opaque value.
     double isoValue = std::numeric_limits<double>::quiet_NaN();
     /// Samples below this classified opacity are not lit (lighting_threshold shading).

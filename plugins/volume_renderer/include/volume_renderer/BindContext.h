@@ -23,7 +23,18 @@ struct RenderSettings;
 ///   `volren_depthTexture` read with texelFetch at gl_FragCoord.xy - `volren_viewportOrigin`;
 /// - EntryPoints: the volume-space points of the box's rasterised front faces, as image2D
 ///   `volren_entryPoints` (rgba32f: xyz, w = `volren_frameStamp` of the frame that wrote it).
-enum class AuxData { VolumeTexture, TransferFunctionTable, PremultipliedTable, JitterTexture, DepthTexture, EntryPoints };
+/// - OccupancyGrid: per macrocell of the volume, whether any sample in it may be visible under
+///   the current transfer function (MacrocellGrid.h), as an R8 3D texture read with texelFetch.
+enum class AuxData
+{
+    VolumeTexture,
+    TransferFunctionTable,
+    PremultipliedTable,
+    JitterTexture,
+    DepthTexture,
+    EntryPoints,
+    OccupancyGrid
+};
 
 /// A light as the volume sees it, in the VolumeNode's local coordinates.
 struct LightInfo

@@ -111,6 +111,7 @@ private:
                         const PassSettings& pass) const;
     void chooseClips(ChosenComposition& out, const RenderSettings& settings, const SceneOffer& offer,
                      const PassSettings& pass) const;
+    bool skippingFits(const Composition& c, const ShaderFunction& acceleration) const;
 
     struct Rules;
     bool check(const SlotFunctions& chosen, unsigned int lightCount, bool inSet,

@@ -61,6 +61,14 @@ struct ImplementationTraits
     /// Part of multi-volume set programs only (the set's traversal, the per-member glue): never
     /// chosen for a single volume, left out of ShaderFunctionRegistry::names().
     bool multiVolume = false;
+    /// Reconstruction: how many voxels beyond a sample's cell of voxels it reads, with weights that
+    /// keep the result within the values read (1 trilinear and nearest, 2 tricubic B-spline);
+    /// -1: not bounded by the voxels, so nothing may be inferred from a region's value range.
+    int footprint = -1;
+    /// Acceleration: skips samples the Classification's CPU mirror (ShaderFunction::mayShow)
+    /// proves transparent from a region's value range, so it needs that mirror and a
+    /// Reconstruction with a footprint.
+    bool skipsByOpacity = false;
     /// Other names users may give it in settings ("dvr" for dvr_front_to_back).
     std::vector<std::string> aliases = {};
 };
@@ -82,6 +90,10 @@ struct ShaderFunction
     std::vector<AuxData> needs = {};         ///< auxiliary data the renderer must create
     std::function<void(BindContext&)> bind = {};  ///< sets this frame's uniform values and textures
     ImplementationTraits traits = {};        ///< what the composition policy knows of it
+    /// Classification: makes, for a binding, the CPU mirror of its opacity over texel values: a
+    /// predicate false only when every texel value in [lo, hi] classifies to zero opacity (used
+    /// for empty-space skipping while that binding lasts). Unset: unknown, nothing is skipped.
+    std::function<std::function<bool(double lo, double hi)>(const BindContext&)> mayShow = {};
 
     /// Whether this implementation may call `slot` (true when its calls are unknown).
     bool mayCall(const std::string& slot) const

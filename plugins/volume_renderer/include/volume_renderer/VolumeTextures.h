@@ -14,6 +14,10 @@ GLenum internalFormatFor(VoxelType type);
 /// the Volume's buffer, so keep the Volume alive as long as the texture.
 osg::ref_ptr<osg::Texture3D> makeVolumeTexture(const Volume& volume);
 
+/// 3D texture of `image` (kept, not copied) in `internalFormat`, clamped to its edges, with
+/// `filter` for minification and magnification.
+osg::ref_ptr<osg::Texture3D> makeTexture3D(osg::Image* image, GLenum internalFormat, osg::Texture::FilterMode filter);
+
 /// RGBA32F 1D lookup table of the transfer function (resolution() texels); `premultiplied`
 /// stores associated colours (r*a, g*a, b*a, a).
 osg::ref_ptr<osg::Texture1D> makeTransferFunctionTexture(const TransferFunction& tf, bool premultiplied = false);

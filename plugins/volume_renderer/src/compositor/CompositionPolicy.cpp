@@ -57,7 +57,8 @@ std::string CompositionPolicy::defaultImplementation(const std::string& slot)
                                                                 {"Reconstruction", "trilinear"},
                                                                 {"Classification", "tf1d"},
                                                                 {"GradientInput", "scalar"},
-                                                                {"Jitter", "hash"}};
+                                                                {"Jitter", "hash"},
+                                                                {"Acceleration", "occupancy"}};
     auto it = defaults.find(slot);
     return it == defaults.end() ? none : it->second;
 }
@@ -103,7 +104,22 @@ ChosenComposition CompositionPolicy::choose(const RenderSettings& settings, cons
         if (!slot.isTemplate && !out.composition.choice.count(slot.name))
             out.composition.choice[slot.name] = wish.chosen(slot.name, defaultImplementation(slot.name));
     chooseClips(out, settings, offer, pass);
+    // The default skipping only where the composition lets it work (the user's choice is checked).
+    if (wish.named("Acceleration").empty())
+        if (const ShaderFunction* f = _registry.find("Acceleration", out.composition.choice["Acceleration"]);
+            f && !skippingFits(out.composition, *f))
+            out.composition.choice["Acceleration"] = none;
     return out;
+}
+
+bool CompositionPolicy::skippingFits(const Composition& c, const ShaderFunction& acceleration) const
+{
+    const ShaderFunction* marcher = _registry.find("RayTraversal", c.functionFor("RayTraversal"));
+    if (!marcher || !marcher->traits.calls || !marcher->mayCall("Acceleration")) return false;
+    if (!acceleration.traits.skipsByOpacity) return true;
+    const ShaderFunction* classification = _registry.find("Classification", c.functionFor("Classification"));
+    const ShaderFunction* reconstruction = _registry.find("Reconstruction", c.functionFor("Reconstruction"));
+    return classification && classification->mayShow && reconstruction && reconstruction->traits.footprint >= 0;
 }
 
 void CompositionPolicy::chooseLighting(ChosenComposition& out, const RenderSettings& settings, const SceneOffer& offer,

@@ -1,11 +1,37 @@
 // Acceleration implementations: where along the ray sampling is worth it (empty-space skipping).
+#include "CommonBindings.h"
+
+#include <volume_renderer/MacrocellGrid.h>
 #include <volume_renderer/ShaderFunctionRegistry.h>
+
+#include <volume_model/RenderSettings.h>
+#include <volume_model/Volume.h>
 
 namespace volren {
 
 void registerAccelerationFunctions(ShaderFunctionRegistry& registry)
 {
     registry.add({.slot = "Acceleration", .name = "null", .traits = {.calls = SlotList{}}});
+
+    // The pass builds the occupancy grid (AuxData::OccupancyGrid) from the volume's macrocell
+    // value ranges, the Reconstruction's footprint and the Classification's CPU mirror.
+    registry.add({.slot = "Acceleration",
+                  .name = "occupancy",
+                  .uniforms = {{"volren_cellScale", "vec3", ""}, {"volren_cellCount", "vec3", ""}},
+                  .textures = {{"volren_occupancy", "sampler3D"}},
+                  .needs = {AuxData::OccupancyGrid},
+                  .bind =
+                      [](BindContext& c) {
+                          const osg::Vec3i d = c.volume.dims();
+                          const int size = c.settings.macrocellSize;
+                          const osg::Vec3i cells((d.x() + size - 1) / size, (d.y() + size - 1) / size,
+                                                 (d.z() + size - 1) / size);
+                          c.uniform("volren_cellScale", osg::Vec3f(float(d.x()) / float(size), float(d.y()) / float(size),
+                                                                   float(d.z()) / float(size)));
+                          c.uniform("volren_cellCount", osg::Vec3f(float(cells.x()), float(cells.y()), float(cells.z())));
+                          c.texture("volren_occupancy", c.aux.at(AuxData::OccupancyGrid).get());
+                      },
+                  .traits = {.calls = SlotList{}, .skipsByOpacity = true}});
 }
 
 }  // namespace volren

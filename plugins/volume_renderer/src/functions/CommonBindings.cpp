@@ -22,13 +22,17 @@ std::pair<double, double> windowOf(const BindContext& c)
     return {c.transfer.domainMin(), c.transfer.domainMax()};
 }
 
-void bindWindow(BindContext& c)
+std::pair<double, double> windowMap(const BindContext& c)
 {
     // texel v -> stored v*norm -> data stored*slope + intercept -> window (data - lo)/(hi - lo).
     const double norm = normalisedScale(c.volume.type());
     const auto [lo, hi] = windowOf(c);
-    const double scale = norm * c.volume.rescaleSlope() / (hi - lo);
-    const double offset = (c.volume.rescaleIntercept() - lo) / (hi - lo);
+    return {norm * c.volume.rescaleSlope() / (hi - lo), (c.volume.rescaleIntercept() - lo) / (hi - lo)};
+}
+
+void bindWindow(BindContext& c)
+{
+    const auto [scale, offset] = windowMap(c);
     c.uniform("volren_window", osg::Vec2f(float(scale), float(offset)));
     c.uniform("volren_tfResolution", float(c.transfer.resolution()));
 }

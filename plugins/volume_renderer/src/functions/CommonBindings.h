@@ -29,6 +29,9 @@ void bindGradientScale(BindContext& c);
 /// The transfer function's value window in data units: [lo, hi].
 std::pair<double, double> windowOf(const BindContext& c);
 
+/// volren_window's value: texel value v -> window u = v * first + second (before clamping).
+std::pair<double, double> windowMap(const BindContext& c);
+
 /// Concatenation helper for uniform lists.
 std::vector<UniformDecl> operator+(std::vector<UniformDecl> a, const std::vector<UniformDecl>& b);
 

@@ -66,11 +66,13 @@ void registerRayTraversalFunctions(ShaderFunctionRegistry& registry)
 {
     registry.add({.slot = "RayTraversal", .name = "null", .traits = {.calls = SlotList{}}});
 
-    ShaderFunction frontToBack = traversal("dvr_front_to_back", {"Reconstruction", "Classification", "ClipPosition", "Shading", "Acceleration"});
+    // The compositing traversals leap over what the Acceleration proves transparent.
+    const SlotList skipping = {"Reconstruction", "Classification", "ClipPosition", "Shading", "Acceleration"};
+    ShaderFunction frontToBack = traversal("dvr_front_to_back", skipping);
     frontToBack.traits.emissionAbsorption = true;
     frontToBack.traits.aliases = {"dvr"};
     registry.add(frontToBack);
-    ShaderFunction backToFront = traversal("dvr_back_to_front", compositing);
+    ShaderFunction backToFront = traversal("dvr_back_to_front", skipping);
     backToFront.traits.emissionAbsorption = true;
     registry.add(backToFront);
 

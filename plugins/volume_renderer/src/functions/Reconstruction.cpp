@@ -8,7 +8,8 @@ namespace volren {
 void registerReconstructionFunctions(ShaderFunctionRegistry& registry)
 {
     registry.add({.slot = "Reconstruction", .name = "null", .traits = {.calls = SlotList{}}});
-    for (const char* name : {"nearest", "trilinear", "tricubic"})
+    // Footprints: voxels beyond a sample's cell its weights (all >= 0) may reach.
+    for (const auto& [name, footprint] : {std::pair{"nearest", 1}, {"trilinear", 1}, {"tricubic", 2}})
         registry.add({.slot = "Reconstruction",
                       .name = name,
                       .uniforms = bindings::geometry,
@@ -19,7 +20,7 @@ void registerReconstructionFunctions(ShaderFunctionRegistry& registry)
                               bindings::bindGeometry(c);
                               bindings::bindVolumeTexture(c);
                           },
-                      .traits = {.calls = SlotList{}}});
+                      .traits = {.calls = SlotList{}, .footprint = footprint}});
 }
 
 }  // namespace volren

@@ -2,6 +2,9 @@
 
 #include <volume_renderer/SampleDistance.h>
 
+#include <stdexcept>
+#include <string>
+
 namespace volren {
 
 BindContext bindContextFor(const VolumeNode& node, osg::StateSet& stateSet, const ComposedProgram& program)
@@ -15,6 +18,28 @@ BindContext bindContextFor(const VolumeNode& node, osg::StateSet& stateSet, cons
                        .textureUnits = program.textureUnits,
                        .boxSize = node.getVolume()->worldSize()};
 }
+
+namespace {
+
+/// The occupancy grid of the bound volume under the bound Classification's opacity mirror.
+osg::Texture* occupancyFor(const BindContext& context, const std::vector<const Binding*>& bindings,
+                           TextureCache& textures, unsigned int cull)
+{
+    const ShaderFunction* classification = nullptr;
+    int footprint = -1;
+    for (const Binding* b : bindings) {
+        if (b->function->slot == "Classification") classification = b->function;
+        if (b->function->slot == "Reconstruction") footprint = b->function->traits.footprint;
+    }
+    if (!classification || !classification->mayShow || footprint < 0)  // the policy's rules exclude this
+        throw std::logic_error("occupancy grid without a Classification mirror and a Reconstruction footprint");
+    // What the classification's opacity depends on besides the volume and the TF.
+    const std::string key = classification->name + " " + std::to_string(context.settings.threshold);
+    return textures.occupancy(context.volume, context.transfer, context.settings.macrocellSize, footprint, key,
+                              [&] { return classification->mayShow(context); }, cull);
+}
+
+}  // namespace
 
 void bindProgram(BindContext& context, const ComposedProgram& program,
                  const std::map<std::string, std::vector<ClipInfo>>& clips, int member, TextureCache& textures,
@@ -36,6 +61,7 @@ void bindProgram(BindContext& context, const ComposedProgram& program,
         context.aux[AuxData::PremultipliedTable] = textures.table(context.transfer, true, cull);
     for (const Binding* b : mine)
         if (b->instance < 0) context.chosen[b->function->slot] = b->function->name;
+    if (needs(AuxData::OccupancyGrid)) context.aux[AuxData::OccupancyGrid] = occupancyFor(context, mine, textures, cull);
 
     static const std::vector<ClipInfo> none;
     for (const Binding* b : mine) {

@@ -57,15 +57,46 @@ osg::Texture* TextureCache::table(const TransferFunction& transfer, bool premult
     return gl.texture.get();
 }
 
+osg::Texture* TextureCache::occupancy(const Volume& volume, const TransferFunction& transfer, int cellSize, int apron,
+                                      const std::string& key,
+                                      const std::function<std::function<bool(double, double)>()>& visibility,
+                                      unsigned int cull)
+{
+    Ranges& ranges = _ranges[{&volume, cellSize, apron}];
+    const bool newRanges = ranges.grid.size() == 0 || ranges.modified != volume.modifiedCount();
+    if (newRanges) {
+        ranges.grid = buildMacrocellGrid(volume, cellSize, apron);
+        ranges.modified = volume.modifiedCount();
+    }
+    ranges.lastCull = cull;
+    Occupancy& o = _occupancies[{&volume, &transfer, cellSize, apron}];
+    if (!o.texture || newRanges || o.volumeModified != volume.modifiedCount() ||
+        o.transferModified != transfer.modifiedCount() || o.key != key) {
+        o.volume = &volume;
+        o.transfer = &transfer;
+        o.texture = makeOccupancyTexture(ranges.grid, occupancyOf(ranges.grid, visibility()));
+        o.volumeModified = volume.modifiedCount();
+        o.transferModified = transfer.modifiedCount();
+        o.key = key;
+        ++_occupancyBuilds;
+    }
+    o.lastCull = cull;
+    return o.texture.get();
+}
+
 void TextureCache::endCull(unsigned int cull)
 {
     dropStale(_volumes, cull);
     dropStale(_tables, cull);
+    dropStale(_ranges, cull);
+    dropStale(_occupancies, cull);
 }
 
 std::size_t TextureCache::bytes() const
 {
-    return imageBytes(_volumes) + imageBytes(_tables);
+    std::size_t occupancy = 0;
+    for (const auto& [key, o] : _occupancies) occupancy += o.texture->getImage()->getTotalSizeInBytes();
+    return imageBytes(_volumes) + imageBytes(_tables) + occupancy;
 }
 
 }  // namespace volren

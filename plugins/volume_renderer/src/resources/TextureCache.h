@@ -6,7 +6,12 @@
 #include <osg/Texture1D>
 #include <osg/Texture3D>
 
+#include <volume_renderer/MacrocellGrid.h>
+
+#include <functional>
 #include <map>
+#include <string>
+#include <tuple>
 #include <utility>
 
 namespace volren {
@@ -21,10 +26,18 @@ public:
     osg::Texture* volume(const Volume& volume, bool nearest, unsigned int cull);
     /// The 1D table of `transfer` (associated colours when `premultiplied`), used in cull `cull`.
     osg::Texture* table(const TransferFunction& transfer, bool premultiplied, unsigned int cull);
+    /// The occupancy texture of `volume` in macrocells of `cellSize` voxels with `apron` under the
+    /// predicate `visibility` makes, remade when the volume, `transfer` or `key` (the
+    /// classification and its settings) changes; the value-range grid is kept per volume.
+    osg::Texture* occupancy(const Volume& volume, const TransferFunction& transfer, int cellSize, int apron,
+                            const std::string& key, const std::function<std::function<bool(double, double)>()>& visibility,
+                            unsigned int cull);
+    /// Occupancy grids built so far (each TF or classification change builds one).
+    unsigned int occupancyBuilds() const { return _occupancyBuilds; }
     /// Frees what the last few cull traversals before `cull` did not use.
     void endCull(unsigned int cull);
     /// Textures held.
-    std::size_t count() const { return _volumes.size() + _tables.size(); }
+    std::size_t count() const { return _volumes.size() + _tables.size() + _occupancies.size(); }
     /// Bytes of texture storage held.
     std::size_t bytes() const;
 
@@ -39,6 +52,24 @@ private:
     };
     std::map<std::pair<const Volume*, bool>, Entry<Volume, osg::Texture3D>> _volumes;
     std::map<std::pair<const TransferFunction*, bool>, Entry<TransferFunction, osg::Texture1D>> _tables;
+    struct Ranges
+    {
+        MacrocellGrid grid;
+        unsigned int modified = 0;
+        unsigned int lastCull = 0;
+    };
+    std::map<std::tuple<const Volume*, int, int>, Ranges> _ranges;
+    struct Occupancy
+    {
+        osg::ref_ptr<const Volume> volume;
+        osg::ref_ptr<const TransferFunction> transfer;
+        osg::ref_ptr<osg::Texture3D> texture;
+        unsigned int volumeModified = 0, transferModified = 0;
+        std::string key;
+        unsigned int lastCull = 0;
+    };
+    std::map<std::tuple<const Volume*, const TransferFunction*, int, int>, Occupancy> _occupancies;
+    unsigned int _occupancyBuilds = 0;
 };
 
 }  // namespace volren

@@ -38,13 +38,19 @@ osg::ref_ptr<osg::Texture3D> makeVolumeTexture(const Volume& volume)
     const osg::Vec3i& d = volume.dims();
     image->setImage(d.x(), d.y(), d.z(), internalFormatFor(volume.type()), GL_RED, pixelTypeFor(volume.type()),
                     const_cast<unsigned char*>(volume.data()), osg::Image::NO_DELETE, 1);
-    osg::ref_ptr<osg::Texture3D> texture = new osg::Texture3D(image.get());
+    osg::ref_ptr<osg::Texture3D> texture = makeTexture3D(image.get(), internalFormatFor(volume.type()), osg::Texture::LINEAR);
     texture->setName(volume.getName());
-    texture->setInternalFormat(internalFormatFor(volume.type()));
+    return texture;
+}
+
+osg::ref_ptr<osg::Texture3D> makeTexture3D(osg::Image* image, GLenum internalFormat, osg::Texture::FilterMode filter)
+{
+    osg::ref_ptr<osg::Texture3D> texture = new osg::Texture3D(image);
+    texture->setInternalFormat(internalFormat);
     texture->setResizeNonPowerOfTwoHint(false);
     texture->setUnRefImageDataAfterApply(false);
-    texture->setFilter(osg::Texture::MIN_FILTER, osg::Texture::LINEAR);
-    texture->setFilter(osg::Texture::MAG_FILTER, osg::Texture::LINEAR);
+    texture->setFilter(osg::Texture::MIN_FILTER, filter);
+    texture->setFilter(osg::Texture::MAG_FILTER, filter);
     for (auto wrap : {osg::Texture::WRAP_S, osg::Texture::WRAP_T, osg::Texture::WRAP_R})
         texture->setWrap(wrap, osg::Texture::CLAMP_TO_EDGE);
     return texture;

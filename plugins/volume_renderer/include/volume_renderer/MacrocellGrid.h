@@ -1,0 +1,47 @@
+#pragma once
+#include <volume_model/Volume.h>
+
+#include <osg/Texture3D>
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+namespace volren {
+
+/// The range of texel values (what the GPU's volume texture returns) in each macrocell of a
+/// volume, widened by an apron of voxels so that every sample inside a cell reads only voxels
+/// counted in the cell's range. Cell (x, y, z) holds voxels [x*cellSize, (x+1)*cellSize) along
+/// x (and so on), i.e. texture coordinates [x*cellSize/dims.x, (x+1)*cellSize/dims.x).
+struct MacrocellGrid
+{
+    int cellSize = 8;                 ///< cell edge in voxels
+    int apron = 1;                    ///< voxels beyond the cell's own counted in its range
+    osg::Vec3i cells = {};            ///< cells along x, y, z: ceil(dims / cellSize)
+    std::vector<float> lo = {}, hi = {};  ///< per cell (x fastest): texel range; lo > hi: only NaN
+
+    /// Index of cell (x, y, z) in lo and hi.
+    std::size_t index(int x, int y, int z) const
+    {
+        return std::size_t(x) + std::size_t(cells.x()) * (std::size_t(y) + std::size_t(cells.y()) * std::size_t(z));
+    }
+    /// Number of cells.
+    std::size_t size() const { return lo.size(); }
+};
+
+/// Texel value the GPU reads for stored voxel `i` of block (0, 0): unsigned integers / max,
+/// signed integers / max clamped to -1 (SNORM), floats as stored.
+double texelValue(const Volume& volume, std::size_t i);
+
+/// The grid of block (0, 0) of `volume` with cells of `cellSize` voxels and `apron` voxels of
+/// apron; NaN voxels are left out of the ranges (they classify to zero opacity), infinities kept.
+/// Throws std::invalid_argument for a cell size below 1 or a negative apron.
+MacrocellGrid buildMacrocellGrid(const Volume& volume, int cellSize, int apron);
+
+/// Per cell 255 where `mayShow(lo, hi)` holds (a sample there may be visible), else 0.
+std::vector<std::uint8_t> occupancyOf(const MacrocellGrid& grid, const std::function<bool(double, double)>& mayShow);
+
+/// R8 3D texture of an occupancy (one texel per cell, nearest filtering, read with texelFetch).
+osg::ref_ptr<osg::Texture3D> makeOccupancyTexture(const MacrocellGrid& grid, const std::vector<std::uint8_t>& occupancy);
+
+}  // namespace volren

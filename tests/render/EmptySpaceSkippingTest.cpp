@@ -1,0 +1,324 @@
+// Empty-space skipping (Acceleration occupancy) is invisible: every image with skipping is the
+// image without it, bit for bit, for closed-form scenes, thin features at every macrocell size,
+// every classification and reconstruction that allows it, both compositing directions, a camera
+// inside an empty cell, transfer-function edits between frames and a real CT; and the value-range
+// grid it rests on equals a brute-force reduction.
+#include "RenderFixture.h"
+#include "TestData.h"
+
+#include <volume_renderer/MacrocellGrid.h>
+#include <volume_renderer/VolumeScene.h>
+
+#include <volume_model/ReadVolume.h>
+
+#include <osg/LightSource>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <random>
+
+namespace volren::test {
+namespace {
+
+TEST(MacrocellGrid, RangesEqualABruteForceReductionWithTheApron)
+{
+    osg::ref_ptr<Volume> volume = new Volume;
+    const osg::Vec3i d(19, 13, 10);  // not multiples of the cell size
+    volume->allocate(VoxelType::UInt16, d);
+    std::mt19937 random(7);
+    auto* v = reinterpret_cast<std::uint16_t*>(volume->data());
+    for (std::size_t i = 0; i < volume->voxelCount(); ++i) v[i] = std::uint16_t(random() % 65536);
+    volume->dirty();
+    for (int size : {1, 4, 5, 32})
+        for (int apron : {0, 1, 2}) {
+            const MacrocellGrid grid = buildMacrocellGrid(*volume, size, apron);
+            ASSERT_EQ(grid.cells, osg::Vec3i((d.x() + size - 1) / size, (d.y() + size - 1) / size, (d.z() + size - 1) / size));
+            for (int cz = 0; cz < grid.cells.z(); ++cz)
+                for (int cy = 0; cy < grid.cells.y(); ++cy)
+                    for (int cx = 0; cx < grid.cells.x(); ++cx) {
+                        double lo = 1e9, hi = -1e9;
+                        for (int z = std::max(0, cz * size - apron); z <= std::min(d.z() - 1, (cz + 1) * size - 1 + apron); ++z)
+                            for (int y = std::max(0, cy * size - apron); y <= std::min(d.y() - 1, (cy + 1) * size - 1 + apron); ++y)
+                                for (int x = std::max(0, cx * size - apron); x <= std::min(d.x() - 1, (cx + 1) * size - 1 + apron); ++x) {
+                                    const double t = v[x + d.x() * (y + d.y() * z)] / 65535.0;
+                                    lo = std::min(lo, t);
+                                    hi = std::max(hi, t);
+                                }
+                        const std::size_t i = grid.index(cx, cy, cz);
+                        ASSERT_FLOAT_EQ(grid.lo[i], float(lo)) << size << " " << apron;
+                        ASSERT_FLOAT_EQ(grid.hi[i], float(hi)) << size << " " << apron;
+                    }
+        }
+}
+
+TEST(MacrocellGrid, NaNVoxelsAreLeftOutAndSignedTexelsFollowSnorm)
+{
+    osg::ref_ptr<Volume> floats = new Volume;
+    floats->allocate(VoxelType::Float32, {4, 2, 2});
+    auto* f = reinterpret_cast<float*>(floats->data());
+    for (int i = 0; i < 16; ++i) f[i] = std::numeric_limits<float>::quiet_NaN();
+    f[3] = 7.0f;  // cell x = 1 of a 2-voxel grid
+    f[2] = std::numeric_limits<float>::infinity();
+    floats->dirty();
+    const MacrocellGrid grid = buildMacrocellGrid(*floats, 2, 0);
+    EXPECT_GT(grid.lo[0], grid.hi[0]) << "a cell of NaN only has no range";
+    EXPECT_EQ(grid.lo[1], 7.0f);
+    EXPECT_EQ(grid.hi[1], std::numeric_limits<float>::infinity());
+    EXPECT_EQ(occupancyOf(grid, [](double, double) { return true; }), (std::vector<std::uint8_t>{0, 255}));
+
+    osg::ref_ptr<Volume> bytes = new Volume;
+    bytes->allocate(VoxelType::Int8, {2, 1, 1});
+    reinterpret_cast<std::int8_t*>(bytes->data())[0] = -128;
+    reinterpret_cast<std::int8_t*>(bytes->data())[1] = 127;
+    EXPECT_EQ(texelValue(*bytes, 0), -1.0);
+    EXPECT_EQ(texelValue(*bytes, 1), 1.0);
+    EXPECT_THROW(buildMacrocellGrid(*bytes, 0, 1), std::invalid_argument);
+}
+
+class EmptySpaceSkipping : public RenderFixture
+{
+protected:
+    /// A 32^3 byte volume of zeros (spacing 1) with `fill` applied.
+    template <typename Fill>
+    static osg::ref_ptr<Volume> bytes(Fill fill, int n = 32)
+    {
+        osg::ref_ptr<Volume> volume = new Volume;
+        volume->allocate(VoxelType::UInt8, {n, n, n});
+        for (int z = 0; z < n; ++z)
+            for (int y = 0; y < n; ++y)
+                for (int x = 0; x < n; ++x) volume->data()[x + n * (y + n * z)] = std::uint8_t(fill(x, y, z));
+        volume->dirty();
+        return volume;
+    }
+
+    static Pixels oblique(osg::Node* scene, const osg::Vec3d& eye = {40, -55, 35}, double fov = 35)
+    {
+        const osg::Matrixd v = osg::Matrixd::lookAt(eye, osg::Vec3d(), osg::Vec3d(0, 0, 1));
+        return render(scene, 48, 40, v, osg::Matrixd::perspective(fov, 1.2, 0.05, 300), osg::Vec3(0.1f, 0.2f, 0.3f));
+    }
+
+    static osg::ref_ptr<VolumeScene> sceneOf(VolumeNode* node, bool lit = false)
+    {
+        osg::ref_ptr<VolumeScene> scene = new VolumeScene;
+        scene->addChild(node);
+        if (lit) {
+            osg::ref_ptr<osg::LightSource> light = new osg::LightSource;
+            light->getLight()->setPosition(osg::Vec4(0.3f, -0.5f, 1.0f, 0.0f));
+            scene->addChild(light.get());
+        }
+        return scene;
+    }
+
+    static bool identical(const Pixels& a, const Pixels& b)
+    {
+        return a.rgba.size() == b.rgba.size() &&
+               std::memcmp(a.rgba.data(), b.rgba.data(), a.rgba.size() * sizeof(osg::Vec4)) == 0;
+    }
+
+    static double maxDifference(const Pixels& a, const Pixels& b)
+    {
+        double worst = 0.0;
+        for (std::size_t i = 0; i < a.rgba.size(); ++i)
+            for (int c = 0; c < 4; ++c) worst = std::max(worst, double(std::abs(a.rgba[i][c] - b.rgba[i][c])));
+        return worst;
+    }
+
+    static int covered(const Pixels& p)
+    {
+        int n = 0;
+        for (const osg::Vec4& c : p.rgba) n += c.a() > 0.0f;
+        return n;
+    }
+
+    /// The scene's image with the node's Acceleration as chosen (checked to be the skipping
+    /// one), then forced null; both returned.
+    template <typename Render>
+    static std::pair<Pixels, Pixels> withAndWithout(VolumeNode* node, VolumeScene* scene, Render draw)
+    {
+        node->settings.forceNull.erase("Acceleration");
+        Pixels skipping = draw();
+        EXPECT_EQ(chosenAcceleration(scene), "occupancy");
+        node->settings.forceNull.insert("Acceleration");
+        Pixels full = draw();
+        node->settings.forceNull.erase("Acceleration");
+        return {skipping, full};
+    }
+
+    /// The Acceleration the scene chose for its first volume in the last frame.
+    static std::string chosenAcceleration(VolumeScene* scene)
+    {
+        const std::vector<std::string> keys = scene->compositionKeys();
+        if (keys.empty()) return {};
+        const std::string tag = "Acceleration=";
+        const std::size_t at = keys.front().find(tag);
+        if (at == std::string::npos) return {};
+        const std::size_t from = at + tag.size();
+        return keys.front().substr(from, keys.front().find(';', from) - from);
+    }
+};
+
+TEST_F(EmptySpaceSkipping, AHomogeneousBlockInAnEmptyBoxIsBitIdenticalAndMatchesItsClosedForm)
+{
+    osg::ref_ptr<Volume> volume = bytes([](int x, int y, int z) {
+        return x >= 10 && x < 20 && y >= 8 && y < 24 && z >= 12 && z < 22 ? 200 : 0;
+    });
+    // Nearest reconstruction keeps the block's faces sharp; the TF is constant over [101, 255].
+    osg::ref_ptr<TransferFunction> tf = transferFunction(
+        {{0, {0, 0, 0, 0}}, {100, {0, 0, 0, 0}}, {101, {1.0f, 0.6f, 0.2f, 0.1f}}, {255, {1.0f, 0.6f, 0.2f, 0.1f}}}, 0, 255);
+    osg::ref_ptr<VolumeNode> node = volumeNode(volume.get(), tf.get());
+    node->settings.functions["Reconstruction"] = "nearest";
+    osg::ref_ptr<VolumeScene> scene = sceneOf(node.get());
+    const auto [skipping, full] = withAndWithout(node.get(), scene.get(), [&] { return renderOrthoFromPlusZ(scene.get(), 32, 32, 32.0); });
+    EXPECT_EQ(maxDifference(skipping, full), 0.0);
+    EXPECT_TRUE(identical(skipping, full));
+    // Through the block along z: 10 voxels of opacity 0.1 per voxel -> 1 - 0.9^10.
+    const double expected = 1.0 - std::pow(0.9, 10.0);
+    EXPECT_NEAR(skipping.at(15, 16).a(), expected, 2e-3);
+    EXPECT_EQ(skipping.at(3, 3).a(), 0.0f) << "beside the block nothing is visible";
+}
+
+TEST_F(EmptySpaceSkipping, AOneVoxelPlaneIsNeverSkippedAtAnyMacrocellSize)
+{
+    osg::ref_ptr<Volume> volume = bytes([](int, int, int z) { return z == 17 ? 255 : 0; });
+    osg::ref_ptr<TransferFunction> tf =
+        transferFunction({{0, {0, 0, 0, 0}}, {128, {0, 0, 0, 0}}, {255, {0.9f, 0.9f, 1.0f, 0.8f}}}, 0, 255);
+    osg::ref_ptr<VolumeNode> node = volumeNode(volume.get(), tf.get());
+    osg::ref_ptr<VolumeScene> scene = sceneOf(node.get());
+    for (int size : {1, 2, 3, 4, 8, 16, 32, 64}) {
+        node->settings.macrocellSize = size;
+        for (const char* traversal : {"dvr_front_to_back", "dvr_back_to_front"}) {
+            node->settings.functions["RayTraversal"] = traversal;
+            const auto [skipping, full] = withAndWithout(node.get(), scene.get(), [&] { return oblique(scene.get()); });
+            EXPECT_TRUE(identical(skipping, full)) << "cells of " << size << ", " << traversal << ": max difference "
+                                                   << maxDifference(skipping, full);
+            EXPECT_GT(covered(skipping), 300) << "the plane is visible";
+        }
+    }
+}
+
+TEST_F(EmptySpaceSkipping, EveryClassificationAndReconstructionThatAllowsItIsBitIdentical)
+{
+    osg::ref_ptr<Volume> volume = bytes([](int x, int y, int z) {
+        const double r = std::sqrt((x - 15.5) * (x - 15.5) + (y - 14.0) * (y - 14.0) + (z - 17.0) * (z - 17.0));
+        return r < 11.0 ? int(255.0 * std::max(0.0, 1.0 - std::abs(r - 8.0) / 3.0)) : 0;  // a soft shell
+    });
+    osg::ref_ptr<TransferFunction> tf =
+        transferFunction({{0, {0, 0, 0, 0}}, {150, {0.2f, 0.4f, 0.9f, 0.0f}}, {255, {1.0f, 0.8f, 0.3f, 0.6f}}}, 0, 255);
+    osg::ref_ptr<VolumeNode> node = volumeNode(volume.get(), tf.get(), true);  // jittered rays too
+    for (bool lit : {false, true}) {
+        osg::ref_ptr<VolumeScene> scene = sceneOf(node.get(), lit);
+        for (const char* classification : {"tf1d", "premultiplied", "threshold", "null"})
+            for (const char* reconstruction : {"nearest", "trilinear", "tricubic"}) {
+                node->settings.functions["Classification"] = classification;
+                node->settings.functions["Reconstruction"] = reconstruction;
+                node->settings.threshold = 0.7;
+                const auto [skipping, full] = withAndWithout(node.get(), scene.get(), [&] { return oblique(scene.get()); });
+                EXPECT_TRUE(identical(skipping, full)) << classification << " " << reconstruction << (lit ? " lit" : "")
+                                                       << ": max difference " << maxDifference(skipping, full);
+                EXPECT_GT(covered(skipping), 150) << classification << " " << reconstruction;
+            }
+    }
+}
+
+TEST_F(EmptySpaceSkipping, ATransferFunctionThatHidesEverythingRendersExactlyTheBackground)
+{
+    osg::ref_ptr<Volume> volume = bytes([](int x, int y, int z) { return (x * 7 + y * 3 + z * 5) % 256; });
+    osg::ref_ptr<TransferFunction> tf = constantTransferFunction({1, 1, 1, 0});
+    osg::ref_ptr<VolumeNode> node = volumeNode(volume.get(), tf.get());
+    osg::ref_ptr<VolumeScene> scene = sceneOf(node.get());
+    const Pixels image = oblique(scene.get());
+    EXPECT_EQ(chosenAcceleration(scene.get()), "occupancy");
+    for (const osg::Vec4& c : image.rgba) ASSERT_EQ(c, osg::Vec4(0.1f, 0.2f, 0.3f, 0.0f));
+}
+
+TEST_F(EmptySpaceSkipping, TransferFunctionEditsBetweenFramesNeverShowStaleOccupancy)
+{
+    // Two blocks of different values, large enough to hold whole macrocells of one value (so a
+    // grid kept from the TF before would hide the block the edit shows): each TF shows one.
+    osg::ref_ptr<Volume> volume = bytes([](int x, int y, int z) {
+        if (x >= 2 && x < 14 && y >= 2 && y < 14 && z >= 2 && z < 30) return 80;
+        if (x >= 16 && x < 31 && y >= 16 && y < 31 && z >= 2 && z < 30) return 220;
+        return 0;
+    });
+    osg::ref_ptr<TransferFunction> tf = new TransferFunction;
+    auto show = [&](double value) {
+        tf->assign(*transferFunction({{0, {0, 0, 0, 0}}, {value - 20, {0, 0, 0, 0}}, {value, {1, 0.7f, 0.3f, 0.5f}},
+                                      {value + 20, {0, 0, 0, 0}}, {255, {0, 0, 0, 0}}},
+                                     0, 255));
+    };
+    const std::vector<double> edits = {80.0, 220.0, 80.0, 150.0, 220.0};
+    // The images without skipping first, in a scene of their own; then the skipping scene draws
+    // one frame per edit in consecutive frames, so it keeps its grid from frame to frame.
+    std::vector<Pixels> expected;
+    {
+        osg::ref_ptr<VolumeNode> reference = volumeNode(volume.get(), tf.get());
+        reference->settings.forceNull.insert("Acceleration");
+        osg::ref_ptr<VolumeScene> full = sceneOf(reference.get());
+        for (double value : edits) {
+            show(value);
+            expected.push_back(oblique(full.get()));
+        }
+    }
+    osg::ref_ptr<VolumeNode> node = volumeNode(volume.get(), tf.get());
+    node->settings.macrocellSize = 4;
+    osg::ref_ptr<VolumeScene> scene = sceneOf(node.get());
+    for (std::size_t i = 0; i < edits.size(); ++i) {
+        show(edits[i]);
+        const Pixels edited = oblique(scene.get());  // the frame of the edit
+        EXPECT_EQ(chosenAcceleration(scene.get()), "occupancy");
+        EXPECT_TRUE(identical(edited, expected[i]))
+            << "TF at " << edits[i] << ": max difference " << maxDifference(edited, expected[i]);
+        EXPECT_GT(covered(edited), 50);  // at 150: the blobs' trilinear rims
+    }
+    EXPECT_FALSE(identical(expected[0], expected[1])) << "the two TFs show different blobs";
+}
+
+TEST_F(EmptySpaceSkipping, ACameraInsideAnEmptyMacrocellSeesTheSameImage)
+{
+    osg::ref_ptr<Volume> volume = bytes([](int x, int y, int z) {
+        return x > 20 && x < 28 && y > 20 && y < 28 && z > 3 && z < 28 ? 180 + (x + y + z) % 60 : 0;
+    });
+    osg::ref_ptr<TransferFunction> tf =
+        transferFunction({{0, {0, 0, 0, 0}}, {170, {0, 0, 0, 0}}, {240, {0.9f, 0.5f, 0.2f, 0.4f}}}, 0, 255);
+    osg::ref_ptr<VolumeNode> node = volumeNode(volume.get(), tf.get());
+    osg::ref_ptr<VolumeScene> scene = sceneOf(node.get(), true);
+    // The volume spans [-16, 16]^3 around the origin; the eye sits in an empty cell near a corner.
+    for (const osg::Vec3d& eye : {osg::Vec3d(-12, -12, -3), osg::Vec3d(-2, -9, 10)}) {
+        const auto [skipping, full] = withAndWithout(node.get(), scene.get(), [&] {
+            const osg::Matrixd v = osg::Matrixd::lookAt(eye, osg::Vec3d(8, 8, 0), osg::Vec3d(0, 0, 1));
+            return render(scene.get(), 48, 40, v, osg::Matrixd::perspective(70, 1.2, 0.05, 300), osg::Vec3(0.1f, 0.2f, 0.3f));
+        });
+        EXPECT_TRUE(identical(skipping, full)) << "max difference " << maxDifference(skipping, full);
+        EXPECT_GT(covered(skipping), 100);
+    }
+}
+
+TEST_F(EmptySpaceSkipping, ARealCtWithASparseTransferFunctionIsBitIdentical)
+{
+    if (!sharedDataPresent()) GTEST_SKIP() << "shared data absent";
+    osg::ref_ptr<Volume> volume = readVolumeFile(sharedData("ct/bonsai.nii.gz"));
+    ASSERT_TRUE(volume.valid());
+    const auto [lo, hi] = volume->valueRange();
+    // Only the densest tenth of the range shows (the trunk and pot), the rest is empty.
+    const double a = lo + 0.6 * (hi - lo), b = lo + 0.9 * (hi - lo);
+    osg::ref_ptr<TransferFunction> tf =
+        transferFunction({{lo, {0, 0, 0, 0}}, {a, {0, 0, 0, 0}}, {b, {0.9f, 0.8f, 0.6f, 0.7f}}, {hi, {1, 1, 1, 0.9f}}}, lo, hi);
+    osg::ref_ptr<VolumeNode> node = volumeNode(volume.get(), tf.get(), true);
+    osg::ref_ptr<VolumeScene> scene = sceneOf(node.get(), true);
+    const osg::BoundingSphere bound = scene->getBound();
+    for (const char* traversal : {"dvr_front_to_back", "dvr_back_to_front"}) {
+        node->settings.functions["RayTraversal"] = traversal;
+        const auto [skipping, full] = withAndWithout(node.get(), scene.get(), [&] {
+            const osg::Vec3d centre = bound.center();
+            const osg::Matrixd v = osg::Matrixd::lookAt(centre + osg::Vec3d(1.2, -2.0, 1.0) * bound.radius(), centre,
+                                                        osg::Vec3d(0, 0, 1));
+            return render(scene.get(), 64, 64, v, osg::Matrixd::perspective(30, 1.0, 0.1 * bound.radius(), 10 * bound.radius()));
+        });
+        EXPECT_TRUE(identical(skipping, full)) << traversal << ": max difference " << maxDifference(skipping, full);
+        EXPECT_GT(covered(skipping), 300);
+    }
+}
+
+}  // namespace
+}  // namespace volren::test
