@@ -38,7 +38,7 @@ for input in ct/bonsai.nii.gz ct/CT_AVM.nii.gz dicom/pancreas_ct_subset; do
     done
     on=$(median <"$work/occupancy.ms")
     off=$(median <"$work/null.ms")
-    maxdiff=$("$volren" compare "$work/occupancy.exr" "$work/null.exr" | sed -n 's/.*max \([^ ,]*\).*/\1/p' | head -1)
+    maxdiff=$("$volren" compare "$work/occupancy.exr" "$work/null.exr" | sed -n 's/^max abs error: *\([^ ]*\).*/\1/p')
     printf '| %s | %s | %.1f | %.1f | %.3f | %s |\n' "$input" "$tf" "$on" "$off" "$(awk -v a="$on" -v b="$off" 'BEGIN {print a / b}')" "$maxdiff"
     rm -f "$work"/*.ms
   done

@@ -76,6 +76,38 @@ TEST(MacrocellGrid, NaNVoxelsAreLeftOutAndSignedTexelsFollowSnorm)
     EXPECT_THROW(buildMacrocellGrid(*bytes, 0, 1), std::invalid_argument);
 }
 
+TEST(MacrocellGrid, TheCoarseLevelIsOccupiedWhereAnyOfItsCellsIs)
+{
+    osg::ref_ptr<Volume> volume = new Volume;
+    volume->allocate(VoxelType::UInt8, {45, 18, 9});  // 9 x 4 x 2 cells of 5 voxels
+    const MacrocellGrid grid = buildMacrocellGrid(*volume, 5, 1);
+    ASSERT_EQ(grid.cells, osg::Vec3i(9, 4, 2));
+    std::vector<std::uint8_t> occupancy(grid.size(), 0);
+    occupancy[grid.index(8, 0, 1)] = 255;  // the last cell along x, alone in its coarse cell
+    occupancy[grid.index(1, 3, 0)] = 255;
+    osg::Vec3i size;
+    const std::vector<std::uint8_t> texels = occupancyTexels(grid, occupancy, size);
+    const int f = occupancyCoarseFactor;
+    ASSERT_EQ(size, osg::Vec3i(9 + (9 + f - 1) / f, 4, 2));
+    auto texel = [&](int x, int y, int z) { return texels[std::size_t(x) + std::size_t(size.x()) * (y + std::size_t(size.y()) * z)]; };
+    int occupiedCoarse = 0;
+    for (int z = 0; z < 2; ++z)
+        for (int y = 0; y < 4; ++y)
+            for (int x = 0; x < size.x(); ++x) {
+                if (x < 9) {
+                    EXPECT_EQ(texel(x, y, z), occupancy[grid.index(x, y, z)]);
+                } else if (y < (4 + f - 1) / f && z < (2 + f - 1) / f) {
+                    const int cx = x - 9;
+                    const bool expected = (cx == 8 / f && y == 0 && z == 0) || (cx == 1 / f && y == 3 / f && z == 0);
+                    EXPECT_EQ(texel(x, y, z), expected ? 255 : 0) << x << " " << y << " " << z;
+                    occupiedCoarse += expected;
+                } else {
+                    EXPECT_EQ(texel(x, y, z), 0);
+                }
+            }
+    EXPECT_EQ(occupiedCoarse, 2);
+}
+
 class EmptySpaceSkipping : public RenderFixture
 {
 protected:

@@ -41,7 +41,16 @@ MacrocellGrid buildMacrocellGrid(const Volume& volume, int cellSize, int apron);
 /// Per cell 255 where `mayShow(lo, hi)` holds (a sample there may be visible), else 0.
 std::vector<std::uint8_t> occupancyOf(const MacrocellGrid& grid, const std::function<bool(double, double)>& mayShow);
 
-/// R8 3D texture of an occupancy (one texel per cell, nearest filtering, read with texelFetch).
+/// Cells per coarse cell along each axis in the occupancy texture's second level.
+constexpr int occupancyCoarseFactor = 4;
+
+/// The occupancy texture's texels: the cells (x < cells.x), then along x the coarse level, each
+/// coarse texel non-zero where any of its occupancyCoarseFactor^3 cells is.
+std::vector<std::uint8_t> occupancyTexels(const MacrocellGrid& grid, const std::vector<std::uint8_t>& occupancy,
+                                          osg::Vec3i& size);
+
+/// R8 3D texture of an occupancy with its coarse level (occupancyTexels: nearest filtering,
+/// read with texelFetch).
 osg::ref_ptr<osg::Texture3D> makeOccupancyTexture(const MacrocellGrid& grid, const std::vector<std::uint8_t>& occupancy);
 
 }  // namespace volren

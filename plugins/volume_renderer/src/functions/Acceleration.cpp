@@ -17,7 +17,9 @@ void registerAccelerationFunctions(ShaderFunctionRegistry& registry)
     // value ranges, the Reconstruction's footprint and the Classification's CPU mirror.
     registry.add({.slot = "Acceleration",
                   .name = "occupancy",
-                  .uniforms = {{"volren_cellScale", "vec3", ""}, {"volren_cellCount", "vec3", ""}},
+                  .uniforms = {{"volren_cellScale", "vec3", ""},
+                               {"volren_cellCount", "vec3", ""},
+                               {"volren_coarseFactor", "float", ""}},
                   .textures = {{"volren_occupancy", "sampler3D"}},
                   .needs = {AuxData::OccupancyGrid},
                   .bind =
@@ -29,6 +31,7 @@ void registerAccelerationFunctions(ShaderFunctionRegistry& registry)
                           c.uniform("volren_cellScale", osg::Vec3f(float(d.x()) / float(size), float(d.y()) / float(size),
                                                                    float(d.z()) / float(size)));
                           c.uniform("volren_cellCount", osg::Vec3f(float(cells.x()), float(cells.y()), float(cells.z())));
+                          c.uniform("volren_coarseFactor", float(occupancyCoarseFactor));
                           c.texture("volren_occupancy", c.aux.at(AuxData::OccupancyGrid).get());
                       },
                   .traits = {.calls = SlotList{}, .skipsByOpacity = true}});

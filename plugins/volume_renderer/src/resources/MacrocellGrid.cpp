@@ -124,13 +124,37 @@ std::vector<std::uint8_t> occupancyOf(const MacrocellGrid& grid, const std::func
     return out;
 }
 
-osg::ref_ptr<osg::Texture3D> makeOccupancyTexture(const MacrocellGrid& grid, const std::vector<std::uint8_t>& occupancy)
+std::vector<std::uint8_t> occupancyTexels(const MacrocellGrid& grid, const std::vector<std::uint8_t>& occupancy,
+                                          osg::Vec3i& size)
 {
     if (occupancy.size() != grid.size()) throw std::invalid_argument("occupancy and macrocell grid differ in size");
+    const int f = occupancyCoarseFactor;
+    const osg::Vec3i c = grid.cells;
+    const osg::Vec3i coarse((c.x() + f - 1) / f, (c.y() + f - 1) / f, (c.z() + f - 1) / f);
+    size = osg::Vec3i(c.x() + coarse.x(), c.y(), c.z());
+    std::vector<std::uint8_t> texels(std::size_t(size.x()) * size.y() * size.z(), 0);
+    auto at = [&](int x, int y, int z) -> std::uint8_t& {
+        return texels[std::size_t(x) + std::size_t(size.x()) * (std::size_t(y) + std::size_t(size.y()) * std::size_t(z))];
+    };
+    for (int z = 0; z < c.z(); ++z)
+        for (int y = 0; y < c.y(); ++y)
+            for (int x = 0; x < c.x(); ++x) {
+                const std::uint8_t o = occupancy[grid.index(x, y, z)];
+                at(x, y, z) = o;
+                std::uint8_t& up = at(c.x() + x / f, y / f, z / f);
+                up = std::max(up, o);
+            }
+    return texels;
+}
+
+osg::ref_ptr<osg::Texture3D> makeOccupancyTexture(const MacrocellGrid& grid, const std::vector<std::uint8_t>& occupancy)
+{
+    osg::Vec3i size;
+    const std::vector<std::uint8_t> texels = occupancyTexels(grid, occupancy, size);
     osg::ref_ptr<osg::Image> image = new osg::Image;
-    image->allocateImage(grid.cells.x(), grid.cells.y(), grid.cells.z(), GL_RED, GL_UNSIGNED_BYTE);
+    image->allocateImage(size.x(), size.y(), size.z(), GL_RED, GL_UNSIGNED_BYTE);
     image->setInternalTextureFormat(GL_R8);
-    std::copy(occupancy.begin(), occupancy.end(), image->data());
+    std::copy(texels.begin(), texels.end(), image->data());
     return makeTexture3D(image.get(), GL_R8, osg::Texture::NEAREST);
 }
 
