@@ -55,7 +55,7 @@ std::vector<BenchConfig> defaultMatrix()
     add("gradient", {"forward", "central9"});
     add("illumination", {"lambert", "cook_torrance"});
     add("lighting", {"off"});
-    add("earlyTermination", {"0.99", "1"});
+    add("earlyTermination", {"0.95", "0.99", "1"});  // 0.95: the default before it was error-bounded
     add("acceleration", {"null"});  // empty-space skipping off: same image, the cost of marching all
     add("macrocellSize", {"4", "16"});
     add("jitter", {"null", "texture"});
@@ -106,6 +106,7 @@ struct BenchOptions
     std::vector<std::string> only;  ///< config names to run (empty: all)
     double tolerance = 1e-3;
     bool vtk = false;
+    bool checkFront = false;  ///< fail when a row beats the default on both axes
     ReferenceOptions::Gradient normals = ReferenceOptions::Gradient::CentralDifferences;
 };
 
@@ -140,6 +141,8 @@ BenchOptions parseBenchOptions(const std::vector<std::string>& args)
         } else if (a == "--tolerance") {
             o.tolerance = std::atof(value().c_str());
             if (!(o.tolerance > 0.0 && o.tolerance < 1.0)) throw UsageError("--tolerance: must be in (0, 1)");
+        } else if (a == "--check-front") {
+            o.checkFront = true;
         } else if (a == "--vtk") {
             o.vtk = true;
         } else if (a == "--normals") {
@@ -272,6 +275,9 @@ private:
         row.height = _height;
         row.config = name;
         row.frameMs = median(draw);
+        std::vector<double> deviation;
+        for (double ms : draw) deviation.push_back(std::abs(ms - row.frameMs));
+        row.frameNoiseMs = median(deviation);
         row.gpuMs = median(gpu);
         row.cpuMs = median(cpu);
         row.textureMb = double(_renderer.volumeScene()->textureBytes()) / (1024.0 * 1024.0);
@@ -325,7 +331,15 @@ int benchCommand(const std::vector<std::string>& args)
         }
     writeReport(report, options.out);
     std::cout << "volren bench: wrote " << options.out << "/bench.{md,csv,json,png}" << std::endl;
-    return 0;
+    int beaten = 0;
+    for (const BenchRow& r : report.rows)
+        if (r.beatsDefault) {
+            ++beaten;
+            std::cout << "volren bench: " << r.dataset << " " << r.width << "x" << r.height << ": " << r.config
+                      << " is faster and more accurate than the default (" << r.frameMs << " ms, RMSE " << r.error.rmse
+                      << ")" << std::endl;
+        }
+    return options.checkFront && beaten > 0 ? 1 : 0;
 }
 
 }  // namespace volren::app

@@ -1,4 +1,5 @@
 #include "BenchReport.h"
+#include "BenchFront.h"
 #include "SceneSetup.h"
 
 #include <volume_renderer/SampleDistance.h>
@@ -50,51 +51,32 @@ std::string number(double v, int digits = 3)
     return out.str();
 }
 
-/// Pareto front per dataset, size and truth (rows drawing the same picture).
-void markPareto(std::vector<BenchRow>& rows)
-{
-    for (BenchRow& p : rows) {
-        if (p.renderer != "volren") continue;
-        p.pareto = true;
-        for (const BenchRow& q : rows) {
-            if (&q == &p || q.renderer != "volren" || q.dataset != p.dataset || q.width != p.width ||
-                q.height != p.height || q.truth != p.truth)
-                continue;  // a different lighting model draws a different picture: not comparable
-            const bool noWorse = q.frameMs <= p.frameMs && q.error.rmse <= p.error.rmse;
-            const bool better = q.frameMs < p.frameMs || q.error.rmse < p.error.rmse;
-            if (noWorse && better) {
-                p.pareto = false;
-                break;
-            }
-        }
-    }
-}
-
 void writeMarkdown(const BenchReport& report, const std::string& path)
 {
     std::ofstream md(path);
     md << "GL context: " << report.context << "  \n" << report.timingNote << ".\n\n";
     md << "| dataset | size | renderer | configuration | frame ms | GPU ms | CPU ms | textures MB | GPU memory MB | RMSE | "
-          "max error | PSNR dB | Pareto |\n";
-    md << "|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|:-:|\n";
+          "max error | PSNR dB | Pareto | beats default |\n";
+    md << "|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|:-:|:-:|\n";
     for (const BenchRow& r : report.rows)
         md << "| " << r.dataset << " | " << r.width << "x" << r.height << " | " << r.renderer
            << " | " << r.config << " | " << number(r.frameMs) << " | " << number(r.gpuMs) << " | " << number(r.cpuMs)
            << " | " << number(r.textureMb) << " | " << number(r.gpuMemoryMb) << " | " << number(r.error.rmse) << " | "
-           << number(r.error.maxAbs) << " | " << number(r.error.psnr) << " | " << (r.pareto ? "yes" : "") << " |\n";
+           << number(r.error.maxAbs) << " | " << number(r.error.psnr) << " | " << (r.pareto ? "yes" : "") << " | "
+           << (r.beatsDefault ? "yes" : "") << " |\n";
 }
 
 void writeCsv(const BenchReport& report, const std::string& path)
 {
     std::ofstream csv(path);
     csv << "dataset,width,height,renderer,config,truth,frame_ms,gpu_ms,cpu_ms,texture_mb,gpu_memory_mb,rmse,max_abs,"
-           "psnr_db,pareto\n";
+           "psnr_db,pareto,beats_default\n";
     auto quoted = [](const std::string& s) { return "\"" + s + "\""; };
     for (const BenchRow& r : report.rows)
         csv << quoted(r.dataset) << "," << r.width << "," << r.height << "," << quoted(r.renderer) << ","
             << quoted(r.config) << "," << quoted(r.truth) << "," << r.frameMs << "," << r.gpuMs << "," << r.cpuMs << ","
             << r.textureMb << "," << r.gpuMemoryMb << "," << r.error.rmse << "," << r.error.maxAbs << "," << r.error.psnr
-            << "," << (r.pareto ? 1 : 0) << "\n";
+            << "," << (r.pareto ? 1 : 0) << "," << (r.beatsDefault ? 1 : 0) << "\n";
 }
 
 void writeJson(const BenchReport& report, const std::string& path)
@@ -105,7 +87,7 @@ void writeJson(const BenchReport& report, const std::string& path)
                         {"config", r.config}, {"truth", r.truth}, {"frame_ms", r.frameMs}, {"gpu_ms", r.gpuMs},
                         {"cpu_ms", r.cpuMs}, {"texture_mb", r.textureMb}, {"gpu_memory_mb", r.gpuMemoryMb},
                         {"rmse", r.error.rmse}, {"max_abs", r.error.maxAbs}, {"psnr_db", r.error.psnr},
-                        {"pareto", r.pareto}, {"composition_keys", r.keys}});
+                        {"pareto", r.pareto}, {"beats_default", r.beatsDefault}, {"composition_keys", r.keys}});
     nlohmann::json doc = {{"context", report.context}, {"timing_note", report.timingNote}, {"rows", rows}};
     std::ofstream(path) << doc.dump(2) << "\n";
 }
@@ -163,6 +145,7 @@ void writeReport(BenchReport& report, const std::string& directory)
 {
     if (!osgDB::makeDirectory(directory)) throw std::runtime_error(directory + ": cannot create the folder");
     markPareto(report.rows);
+    markRowsBeatingTheDefault(report.rows);
     writeMarkdown(report, directory + "/bench.md");
     writeCsv(report, directory + "/bench.csv");
     writeJson(report, directory + "/bench.json");

@@ -30,11 +30,13 @@ struct BenchRow
     std::string renderer = "volren";     ///< or the peer ("VTK ...")
     int width = 0, height = 0;
     double frameMs = -1.0, gpuMs = -1.0, cpuMs = -1.0;  ///< medians
+    double frameNoiseMs = 0.0;  ///< median absolute deviation of the frame times
     double textureMb = -1.0;    ///< GL texture storage volren allocated
     double gpuMemoryMb = -1.0;  ///< drop of the driver's free video memory (NVIDIA), -1 unknown
     ImageError error;
     std::vector<std::string> keys;  ///< composition keys drawn
     bool pareto = false;            ///< on the speed/accuracy Pareto front of its dataset and size
+    bool beatsDefault = false;      ///< faster and more accurate than the default beyond the noise
 };
 
 struct BenchReport

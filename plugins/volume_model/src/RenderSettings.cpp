@@ -1,6 +1,7 @@
 #include <volume_model/ParseNumber.h>
 #include <volume_model/RenderSettings.h>
 
+#include <charconv>
 #include <cmath>
 #include <sstream>
 
@@ -51,11 +52,12 @@ const std::vector<std::string>& debugViewNames()
     return names;
 }
 
+/// The shortest text that reads back as `v` (so settings survive a scene file unchanged).
 std::string number(double v)
 {
-    std::ostringstream out;
-    out << v;
-    return out.str();
+    char text[32];
+    const auto [end, error] = std::to_chars(text, text + sizeof(text), v);
+    return error == std::errc() ? std::string(text, end) : std::string("nan");
 }
 
 }  // namespace
@@ -85,7 +87,7 @@ std::vector<std::pair<std::string, std::string>> RenderSettings::keys()
         {"samplerate", "samples per smallest voxel spacing (= 1 / sampleFactor)"},
         {"sampleFactor", "step as a factor of the smallest voxel spacing"},
         {"sampleDistance", "step in world units (0 = use sampleFactor)"},
-        {"earlyTermination", "opacity at which front-to-back marching stops (1 = never)"},
+        {"earlyTermination", "opacity at which front-to-back marching stops (1 = never; default 1 - 1/512)"},
         {"macrocellSize", "edge of the empty-space-skipping macrocells in voxels (1-1024)"},
         {"isoValue", "isosurface data value (empty = the TF's first opaque value)"},
         {"shadingThreshold", "opacity below which lighting_threshold shading leaves samples unlit"},

@@ -17,8 +17,10 @@ struct RenderSettings
     double sampleDistanceFactor = 0.5;
     /// Step in world units; when > 0 it overrides sampleDistanceFactor.
     double sampleDistance = 0.0;
-    /// Front-to-back marching stops once accumulated opacity reaches this (1 = never early).
-    double earlyTerminationThreshold = 0.95;
+    /// Front-to-back marching stops once accumulated opacity reaches this (1 = never early). The
+    /// default stops when the transmittance left is below 1/512: what lies behind could change
+    /// a pixel by at most 1/512 of full scale per unit of emission (half an 8-bit step).
+    double earlyTerminationThreshold = 1.0 - 1.0 / 512.0;
     /// Edge of the empty-space-skipping macrocells, in voxels (Acceleration occupancy).
     int macrocellSize = 8;
     /// Data value of the isosurface (isosurface traversal); NaN = the TF's first opaque value.

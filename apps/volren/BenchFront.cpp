@@ -1,0 +1,44 @@
+#include "BenchFront.h"
+
+#include <algorithm>
+
+namespace volren::app {
+
+/// Pareto front per dataset, size and truth (rows drawing the same picture).
+void markPareto(std::vector<BenchRow>& rows)
+{
+    for (BenchRow& p : rows) {
+        if (p.renderer != "volren") continue;
+        p.pareto = true;
+        for (const BenchRow& q : rows) {
+            if (&q == &p || q.renderer != "volren" || q.dataset != p.dataset || q.width != p.width ||
+                q.height != p.height || q.truth != p.truth)
+                continue;  // a different lighting model draws a different picture: not comparable
+            const bool noWorse = q.frameMs <= p.frameMs && q.error.rmse <= p.error.rmse;
+            const bool better = q.frameMs < p.frameMs || q.error.rmse < p.error.rmse;
+            if (noWorse && better) {
+                p.pareto = false;
+                break;
+            }
+        }
+    }
+}
+
+std::vector<const BenchRow*> markRowsBeatingTheDefault(std::vector<BenchRow>& rows)
+{
+    std::vector<const BenchRow*> out;
+    for (const BenchRow& d : rows) {
+        if (d.renderer != "volren" || d.config != "default") continue;
+        for (BenchRow& r : rows) {
+            if (&r == &d || r.renderer != "volren" || r.dataset != d.dataset || r.width != d.width ||
+                r.height != d.height || r.truth != d.truth)
+                continue;
+            const double timeMargin = std::max(2.0 * (r.frameNoiseMs + d.frameNoiseMs), 0.02 * d.frameMs);
+            r.beatsDefault = r.frameMs < d.frameMs - timeMargin && r.error.rmse < 0.95 * d.error.rmse;
+            if (r.beatsDefault) out.push_back(&r);
+        }
+    }
+    return out;
+}
+
+}  // namespace volren::app

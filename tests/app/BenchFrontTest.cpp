@@ -1,0 +1,57 @@
+// volren bench's front: the Pareto rows per picture, and the rows that beat the default beyond
+// the run's noise (what `volren bench --check-front` fails on).
+#include "BenchFront.h"
+
+#include <gtest/gtest.h>
+
+namespace volren::app {
+namespace {
+
+BenchRow row(const std::string& config, double ms, double rmse, double noise = 1.0, const std::string& truth = "lit")
+{
+    BenchRow r;
+    r.dataset = "ct";
+    r.config = config;
+    r.truth = truth;
+    r.width = r.height = 64;
+    r.frameMs = ms;
+    r.frameNoiseMs = noise;
+    r.error.rmse = rmse;
+    return r;
+}
+
+TEST(BenchFront, ARowFasterAndMoreAccurateThanTheDefaultBeyondTheNoiseBeatsIt)
+{
+    std::vector<BenchRow> rows = {row("default", 100, 0.010),
+                                  row("fast-and-good", 80, 0.008),     // beats it
+                                  row("within-noise", 97, 0.008, 1.5),  // 3 ms faster, noise margin 5 ms
+                                  row("barely-better", 80, 0.0097),     // RMSE only 3 % lower
+                                  row("slower", 120, 0.002),
+                                  row("other-picture", 50, 0.001, 1.0, "unlit")};
+    const std::vector<const BenchRow*> beaten = markRowsBeatingTheDefault(rows);
+    ASSERT_EQ(beaten.size(), 1u);
+    EXPECT_EQ(beaten.front()->config, "fast-and-good");
+    for (const BenchRow& r : rows) EXPECT_EQ(r.beatsDefault, r.config == "fast-and-good") << r.config;
+
+    markPareto(rows);
+    auto front = [&](const std::string& name) {
+        for (const BenchRow& r : rows)
+            if (r.config == name) return r.pareto;
+        return false;
+    };
+    EXPECT_FALSE(front("default"));
+    EXPECT_TRUE(front("fast-and-good"));
+    EXPECT_TRUE(front("slower"));
+    EXPECT_FALSE(front("within-noise")) << "fast-and-good is faster and as accurate";
+    EXPECT_TRUE(front("other-picture")) << "alone with its own picture";
+}
+
+TEST(BenchFront, NothingBeatsADefaultOnTheFront)
+{
+    std::vector<BenchRow> rows = {row("default", 100, 0.005), row("coarse", 50, 0.02), row("fine", 200, 0.003),
+                                  row("noisy-twin", 99, 0.004, 2.0)};
+    EXPECT_TRUE(markRowsBeatingTheDefault(rows).empty());
+}
+
+}  // namespace
+}  // namespace volren::app
