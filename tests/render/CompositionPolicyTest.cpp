@@ -165,8 +165,11 @@ TEST(CompositionPolicy, EmptySpaceSkippingIsTheDefaultWhereverItCanWork)
     EXPECT_EQ(acceleration({{"RayTraversal", "dvr_back_to_front"}}), "occupancy");
     for (const char* classification : {"tf1d", "premultiplied", "threshold", "null"})
         EXPECT_EQ(acceleration({{"Classification", classification}}), "occupancy") << classification;
-    for (const char* traversal : {"mip", "minip", "average", "mida", "isosurface"})
+    for (const char* traversal : {"mip", "minip"})
+        EXPECT_EQ(acceleration({{"RayTraversal", traversal}}), "range") << traversal << " leaps past what cannot pass its extremum";
+    for (const char* traversal : {"average", "mida", "isosurface", "gmip"})
         EXPECT_EQ(acceleration({{"RayTraversal", traversal}}), "null") << traversal << " does not leap";
+    EXPECT_EQ(acceleration({{"RayTraversal", "mip"}, {"Reconstruction", "null"}}), "null");
     EXPECT_EQ(acceleration({{"Reconstruction", "null"}}), "null") << "a constant fetch says nothing of the voxels";
     RenderSettings off;
     off.functions["Acceleration"] = "null";
@@ -199,11 +202,17 @@ TEST(CompositionPolicy, InvalidCompositionsAreRejectedWithTheirReason)
     EXPECT_NE(reason({{"Illumination", "lambert"}}).find("nothing calls Illumination"), std::string::npos);
     EXPECT_NE(reason({}, 1).find("uses no lights"), std::string::npos);
     EXPECT_NE(reason({{"Gradient", "central"}}).find("nothing calls Gradient"), std::string::npos);
-    EXPECT_NE(reason({{"RayTraversal", "gmip"}, {"Reconstruction", "null"}, {"Acceleration", "null"}}).find("needs a real Gradient"),
+    EXPECT_NE(reason({{"RayTraversal", "gmip"}, {"Reconstruction", "null"}}).find("needs a real Gradient"),
               std::string::npos);
-    EXPECT_NE(reason({{"Reconstruction", "null"}}).find("needs a Reconstruction bounded by its voxels"), std::string::npos);
-    EXPECT_EQ(reason({{"Reconstruction", "null"}, {"Acceleration", "null"}}), "");
-    EXPECT_NE(reason({{"RayTraversal", "mip"}}).find("nothing calls Acceleration"), std::string::npos);
+    EXPECT_NE(reason({{"Reconstruction", "null"}, {"Acceleration", "occupancy"}}).find("needs a Reconstruction bounded by its voxels"),
+              std::string::npos);
+    EXPECT_EQ(reason({{"Reconstruction", "null"}}), "");
+    EXPECT_EQ(reason({{"Acceleration", "occupancy"}}), "");
+    EXPECT_NE(reason({{"RayTraversal", "mip"}, {"Acceleration", "occupancy"}}).find("occupancy leaps by opacity, RayTraversal/mip by extremum"),
+              std::string::npos);
+    EXPECT_NE(reason({{"Acceleration", "range"}}).find("range leaps by extremum, RayTraversal/dvr_front_to_back by opacity"),
+              std::string::npos);
+    EXPECT_NE(reason({{"RayTraversal", "average"}, {"Acceleration", "range"}}).find("nothing calls Acceleration"), std::string::npos);
     EXPECT_NE(reason({{"RayTraversal", "sum_of_media"}}).find("only in multi-volume sets"), std::string::npos);
     EXPECT_NE(reason({{"Jitter", "sparkle"}}).find("no implementation Jitter/sparkle"), std::string::npos);
     EXPECT_NE(reason({}, 0, {{"ClipRay", {"depth", "depth"}}}).find("may appear once"), std::string::npos);

@@ -163,14 +163,15 @@ protected:
         return n;
     }
 
-    /// The scene's image with the node's Acceleration as chosen (checked to be the skipping
-    /// one), then forced null; both returned.
+    /// The scene's image with the node's Acceleration as chosen (checked to be `expected`),
+    /// then forced null; both returned.
     template <typename Render>
-    static std::pair<Pixels, Pixels> withAndWithout(VolumeNode* node, VolumeScene* scene, Render draw)
+    static std::pair<Pixels, Pixels> withAndWithout(VolumeNode* node, VolumeScene* scene, Render draw,
+                                                    const std::string& expected = "occupancy")
     {
         node->settings.forceNull.erase("Acceleration");
         Pixels skipping = draw();
-        EXPECT_EQ(chosenAcceleration(scene), "occupancy");
+        EXPECT_EQ(chosenAcceleration(scene), expected);
         node->settings.forceNull.insert("Acceleration");
         Pixels full = draw();
         node->settings.forceNull.erase("Acceleration");
@@ -326,6 +327,34 @@ TEST_F(EmptySpaceSkipping, ACameraInsideAnEmptyMacrocellSeesTheSameImage)
     }
 }
 
+TEST_F(EmptySpaceSkipping, MaximumAndMinimumProjectionsLeapWhatCannotPassTheirExtremum)
+{
+    // A bright core and a dark hole in a medium: MIP's maximum is the core wherever a ray
+    // meets it, MinIP's minimum the hole; the leaps after them skip most of each ray.
+    osg::ref_ptr<Volume> volume = bytes([](int x, int y, int z) {
+        const double core = (x - 12) * (x - 12) + (y - 18) * (y - 18) + (z - 16) * (z - 16);
+        const double hole = (x - 22) * (x - 22) + (y - 12) * (y - 12) + (z - 14) * (z - 14);
+        if (core < 16) return 250 - int(core);
+        if (hole < 9) return 5 + int(hole);
+        return 60 + (x * 7 + y * 13 + z * 3) % 90;  // a rough medium
+    });
+    osg::ref_ptr<TransferFunction> tf =
+        transferFunction({{0, {0.1f, 0.2f, 0.9f, 1.0f}}, {120, {0.4f, 0.4f, 0.4f, 0.5f}}, {255, {1, 0.9f, 0.7f, 1.0f}}}, 0, 255);
+    osg::ref_ptr<VolumeNode> node = volumeNode(volume.get(), tf.get(), true);
+    osg::ref_ptr<VolumeScene> scene = sceneOf(node.get());
+    for (const char* traversal : {"mip", "minip"})
+        for (const char* reconstruction : {"nearest", "trilinear", "tricubic"})
+            for (int size : {2, 8}) {
+                node->settings.functions["RayTraversal"] = traversal;
+                node->settings.functions["Reconstruction"] = reconstruction;
+                node->settings.macrocellSize = size;
+                const auto [skipping, full] = withAndWithout(node.get(), scene.get(), [&] { return oblique(scene.get()); }, "range");
+                EXPECT_TRUE(identical(skipping, full)) << traversal << " " << reconstruction << " cells of " << size
+                                                       << ": max difference " << maxDifference(skipping, full);
+                EXPECT_GT(covered(skipping), 800) << traversal;
+            }
+}
+
 TEST_F(EmptySpaceSkipping, ARealCtWithASparseTransferFunctionIsBitIdentical)
 {
     if (!sharedDataPresent()) GTEST_SKIP() << "shared data absent";
@@ -339,16 +368,19 @@ TEST_F(EmptySpaceSkipping, ARealCtWithASparseTransferFunctionIsBitIdentical)
     osg::ref_ptr<VolumeNode> node = volumeNode(volume.get(), tf.get(), true);
     osg::ref_ptr<VolumeScene> scene = sceneOf(node.get(), true);
     const osg::BoundingSphere bound = scene->getBound();
-    for (const char* traversal : {"dvr_front_to_back", "dvr_back_to_front"}) {
+    for (const char* traversal : {"dvr_front_to_back", "dvr_back_to_front", "mip", "minip"}) {
         node->settings.functions["RayTraversal"] = traversal;
+        const bool extremum = std::string(traversal).find("mi") == 0;
         const auto [skipping, full] = withAndWithout(node.get(), scene.get(), [&] {
             const osg::Vec3d centre = bound.center();
             const osg::Matrixd v = osg::Matrixd::lookAt(centre + osg::Vec3d(1.2, -2.0, 1.0) * bound.radius(), centre,
                                                         osg::Vec3d(0, 0, 1));
             return render(scene.get(), 64, 64, v, osg::Matrixd::perspective(30, 1.0, 0.1 * bound.radius(), 10 * bound.radius()));
-        });
+        }, extremum ? "range" : "occupancy");
         EXPECT_TRUE(identical(skipping, full)) << traversal << ": max difference " << maxDifference(skipping, full);
-        EXPECT_GT(covered(skipping), 300);
+        if (std::string(traversal) != "minip") {  // MinIP finds the air
+            EXPECT_GT(covered(skipping), 300);
+        }
     }
 }
 

@@ -25,20 +25,12 @@ struct Implementation
 
 void PrintTo(const Implementation& i, std::ostream* out) { *out << i.slot << "/" << i.name; }
 
-std::vector<Implementation> allImplementations()
-{
-    std::vector<Implementation> all;
-    for (const SlotInfo& s : slots())
-        for (const std::string& name : ShaderFunctionRegistry::instance().names(s.name)) all.push_back({s.name, name});
-    return all;
-}
-
-/// The policy's choice for a lit, clipped volume (every clip kind offered) with `impl` asked for,
-/// or, for a template slot, its instances narrowed to `impl` alone.
-Composition compositionWith(const Implementation& impl)
+/// The policy's choice with `impl` (and `traversal`, unless empty) asked for.
+Composition compositionWith(const Implementation& impl, const std::string& traversal)
 {
     const CompositionPolicy policy;
     RenderSettings settings;
+    if (!traversal.empty()) settings.functions["RayTraversal"] = traversal;
     if (!findSlot(impl.slot)->isTemplate) settings.functions[impl.slot] = impl.name;
     static osg::ref_ptr<ClipPlaneNode> plane = new ClipPlaneNode;
     SceneOffer offer;
@@ -48,6 +40,28 @@ Composition compositionWith(const Implementation& impl)
     if (findSlot(impl.slot)->isTemplate) {
         c.instances.clear();
         if (impl.name != "null") c.instances[impl.slot] = {impl.name};
+    }
+    return c;
+}
+
+std::vector<Implementation> allImplementations()
+{
+    std::vector<Implementation> all;
+    for (const SlotInfo& s : slots())
+        for (const std::string& name : ShaderFunctionRegistry::instance().names(s.name)) all.push_back({s.name, name});
+    return all;
+}
+
+/// The policy's choice for a lit, clipped volume (every clip kind offered) with `impl` asked for,
+/// or, for a template slot, its instances narrowed to `impl` alone; with the default traversal,
+/// else the first with which it is valid (an Acceleration works with the traversals that take
+/// its leaps).
+Composition compositionWith(const Implementation& impl)
+{
+    Composition c = compositionWith(impl, "");
+    for (const std::string& traversal : ShaderFunctionRegistry::instance().names("RayTraversal")) {
+        if (CompositionPolicy().invalidReason(c).empty() || impl.slot == "RayTraversal") break;
+        c = compositionWith(impl, traversal);
     }
     return c;
 }

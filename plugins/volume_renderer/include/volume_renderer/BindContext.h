@@ -24,7 +24,9 @@ struct RenderSettings;
 /// - EntryPoints: the volume-space points of the box's rasterised front faces, as image2D
 ///   `volren_entryPoints` (rgba32f: xyz, w = `volren_frameStamp` of the frame that wrote it).
 /// - OccupancyGrid: per macrocell of the volume, whether any sample in it may be visible under
-///   the current transfer function (MacrocellGrid.h), as an R8 3D texture read with texelFetch.
+///   the current transfer function (MacrocellGrid.h), as an R8 3D texture read with texelFetch;
+/// - MacrocellRanges: per macrocell the smallest and largest texel value its samples can read,
+///   as an RG32F 3D texture read with texelFetch (MacrocellGrid.h).
 enum class AuxData
 {
     VolumeTexture,
@@ -33,7 +35,8 @@ enum class AuxData
     JitterTexture,
     DepthTexture,
     EntryPoints,
-    OccupancyGrid
+    OccupancyGrid,
+    MacrocellRanges
 };
 
 /// A light as the volume sees it, in the VolumeNode's local coordinates.

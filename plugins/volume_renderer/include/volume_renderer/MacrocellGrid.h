@@ -49,6 +49,13 @@ constexpr int occupancyCoarseFactor = 4;
 std::vector<std::uint8_t> occupancyTexels(const MacrocellGrid& grid, const std::vector<std::uint8_t>& occupancy,
                                           osg::Vec3i& size);
 
+/// The range texture's texels, (lo, hi) per cell in the layout of occupancyTexels: the cells,
+/// then the coarse level (the smallest lo and largest hi of its cells).
+std::vector<osg::Vec2f> rangeTexels(const MacrocellGrid& grid, osg::Vec3i& size);
+
+/// RG32F 3D texture of the grid's ranges with their coarse level (rangeTexels; nearest, texelFetch).
+osg::ref_ptr<osg::Texture3D> makeRangeTexture(const MacrocellGrid& grid);
+
 /// R8 3D texture of an occupancy with its coarse level (occupancyTexels: nearest filtering,
 /// read with texelFetch).
 osg::ref_ptr<osg::Texture3D> makeOccupancyTexture(const MacrocellGrid& grid, const std::vector<std::uint8_t>& occupancy);

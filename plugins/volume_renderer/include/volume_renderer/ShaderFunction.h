@@ -65,10 +65,12 @@ struct ImplementationTraits
     /// keep the result within the values read (1 trilinear and nearest, 2 tricubic B-spline);
     /// -1: not bounded by the voxels, so nothing may be inferred from a region's value range.
     int footprint = -1;
-    /// Acceleration: skips samples the Classification's CPU mirror (ShaderFunction::mayShow)
-    /// proves transparent from a region's value range, so it needs that mirror and a
-    /// Reconstruction with a footprint.
-    bool skipsByOpacity = false;
+    /// Acceleration: what its leaps rest on; RayTraversal: the leaps it can take. "opacity":
+    /// samples the Classification's CPU mirror (ShaderFunction::mayShow) proves transparent
+    /// from a region's value range (volren_skip); "extremum": samples that cannot pass the ray's
+    /// running maximum or minimum (MIP, MinIP; the volren_skip overload with a level). Both need
+    /// a Reconstruction with a footprint. Empty: none (an Acceleration with none leaps nowhere).
+    std::string skips = {};
     /// Other names users may give it in settings ("dvr" for dvr_front_to_back).
     std::vector<std::string> aliases = {};
 };

@@ -57,8 +57,7 @@ std::string CompositionPolicy::defaultImplementation(const std::string& slot)
                                                                 {"Reconstruction", "trilinear"},
                                                                 {"Classification", "tf1d"},
                                                                 {"GradientInput", "scalar"},
-                                                                {"Jitter", "hash"},
-                                                                {"Acceleration", "occupancy"}};
+                                                                {"Jitter", "hash"}};
     auto it = defaults.find(slot);
     return it == defaults.end() ? none : it->second;
 }
@@ -104,11 +103,14 @@ ChosenComposition CompositionPolicy::choose(const RenderSettings& settings, cons
         if (!slot.isTemplate && !out.composition.choice.count(slot.name))
             out.composition.choice[slot.name] = wish.chosen(slot.name, defaultImplementation(slot.name));
     chooseClips(out, settings, offer, pass);
-    // The default skipping only where the composition lets it work (the user's choice is checked).
+    // Skipping, by default wherever an implementation takes the leaps the traversal can take
+    // (the user's choice is checked, not replaced).
     if (wish.named("Acceleration").empty())
-        if (const ShaderFunction* f = _registry.find("Acceleration", out.composition.choice["Acceleration"]);
-            f && !skippingFits(out.composition, *f))
-            out.composition.choice["Acceleration"] = none;
+        for (const std::string& name : _registry.names("Acceleration"))
+            if (const ShaderFunction* f = _registry.find("Acceleration", name); f && skippingFits(out.composition, *f)) {
+                out.composition.choice["Acceleration"] = name;
+                break;
+            }
     return out;
 }
 
@@ -116,10 +118,11 @@ bool CompositionPolicy::skippingFits(const Composition& c, const ShaderFunction&
 {
     const ShaderFunction* marcher = _registry.find("RayTraversal", c.functionFor("RayTraversal"));
     if (!marcher || !marcher->traits.calls || !marcher->mayCall("Acceleration")) return false;
-    if (!acceleration.traits.skipsByOpacity) return true;
+    if (acceleration.traits.skips.empty() || acceleration.traits.skips != marcher->traits.skips) return false;
     const ShaderFunction* classification = _registry.find("Classification", c.functionFor("Classification"));
     const ShaderFunction* reconstruction = _registry.find("Reconstruction", c.functionFor("Reconstruction"));
-    return classification && classification->mayShow && reconstruction && reconstruction->traits.footprint >= 0;
+    const bool mirror = acceleration.traits.skips != "opacity" || (classification && classification->mayShow);
+    return mirror && reconstruction && reconstruction->traits.footprint >= 0;
 }
 
 void CompositionPolicy::chooseLighting(ChosenComposition& out, const RenderSettings& settings, const SceneOffer& offer,

@@ -71,12 +71,20 @@ void registerRayTraversalFunctions(ShaderFunctionRegistry& registry)
     ShaderFunction frontToBack = traversal("dvr_front_to_back", skipping);
     frontToBack.traits.emissionAbsorption = true;
     frontToBack.traits.aliases = {"dvr"};
+    frontToBack.traits.skips = "opacity";
     registry.add(frontToBack);
     ShaderFunction backToFront = traversal("dvr_back_to_front", skipping);
     backToFront.traits.emissionAbsorption = true;
+    backToFront.traits.skips = "opacity";
     registry.add(backToFront);
 
-    for (const char* name : {"mip", "minip", "average"}) registry.add(traversal(name, projecting));  // never shade
+    // The projections never shade; MIP and MinIP leap over what cannot pass their running extremum.
+    for (const char* name : {"mip", "minip"}) {
+        ShaderFunction extremum = traversal(name, {"Reconstruction", "Classification", "ClipPosition", "Acceleration"});
+        extremum.traits.skips = "extremum";
+        registry.add(extremum);
+    }
+    registry.add(traversal("average", projecting));
 
     ShaderFunction mida = traversal("mida", compositing, bindings::window);
     mida.bind = [](BindContext& c) {

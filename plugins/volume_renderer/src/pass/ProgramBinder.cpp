@@ -21,18 +21,24 @@ BindContext bindContextFor(const VolumeNode& node, osg::StateSet& stateSet, cons
 
 namespace {
 
+/// The bound Reconstruction's footprint: the apron of the macrocell value ranges.
+int footprintOf(const std::vector<const Binding*>& bindings)
+{
+    for (const Binding* b : bindings)
+        if (b->function->slot == "Reconstruction" && b->function->traits.footprint >= 0) return b->function->traits.footprint;
+    throw std::logic_error("macrocell grid without a Reconstruction footprint");  // the policy's rules exclude this
+}
+
 /// The occupancy grid of the bound volume under the bound Classification's opacity mirror.
 osg::Texture* occupancyFor(const BindContext& context, const std::vector<const Binding*>& bindings,
                            TextureCache& textures, unsigned int cull)
 {
     const ShaderFunction* classification = nullptr;
-    int footprint = -1;
-    for (const Binding* b : bindings) {
+    for (const Binding* b : bindings)
         if (b->function->slot == "Classification") classification = b->function;
-        if (b->function->slot == "Reconstruction") footprint = b->function->traits.footprint;
-    }
-    if (!classification || !classification->mayShow || footprint < 0)  // the policy's rules exclude this
-        throw std::logic_error("occupancy grid without a Classification mirror and a Reconstruction footprint");
+    const int footprint = footprintOf(bindings);
+    if (!classification || !classification->mayShow)  // the policy's rules exclude this
+        throw std::logic_error("occupancy grid without a Classification mirror");
     // What the classification's opacity depends on besides the volume and the TF.
     const std::string key = classification->name + " " + std::to_string(context.settings.threshold);
     return textures.occupancy(context.volume, context.transfer, context.settings.macrocellSize, footprint, key,
@@ -62,6 +68,9 @@ void bindProgram(BindContext& context, const ComposedProgram& program,
     for (const Binding* b : mine)
         if (b->instance < 0) context.chosen[b->function->slot] = b->function->name;
     if (needs(AuxData::OccupancyGrid)) context.aux[AuxData::OccupancyGrid] = occupancyFor(context, mine, textures, cull);
+    if (needs(AuxData::MacrocellRanges))
+        context.aux[AuxData::MacrocellRanges] =
+            textures.ranges(context.volume, context.settings.macrocellSize, footprintOf(mine), cull);
 
     static const std::vector<ClipInfo> none;
     for (const Binding* b : mine) {

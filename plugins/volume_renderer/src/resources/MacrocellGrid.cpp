@@ -124,27 +124,66 @@ std::vector<std::uint8_t> occupancyOf(const MacrocellGrid& grid, const std::func
     return out;
 }
 
+namespace {
+
+/// Size of the texture of cells followed along x by their coarse level.
+osg::Vec3i packedSize(const MacrocellGrid& grid)
+{
+    const int f = occupancyCoarseFactor;
+    const osg::Vec3i c = grid.cells;
+    return osg::Vec3i(c.x() + (c.x() + f - 1) / f, c.y(), c.z());
+}
+
+/// Calls visit(cell index, packed texel index, coarse packed texel index) for every cell.
+template <typename Visit>
+void forEachPackedCell(const MacrocellGrid& grid, const osg::Vec3i& size, Visit visit)
+{
+    const int f = occupancyCoarseFactor;
+    const osg::Vec3i c = grid.cells;
+    auto at = [&](int x, int y, int z) {
+        return std::size_t(x) + std::size_t(size.x()) * (std::size_t(y) + std::size_t(size.y()) * std::size_t(z));
+    };
+    for (int z = 0; z < c.z(); ++z)
+        for (int y = 0; y < c.y(); ++y)
+            for (int x = 0; x < c.x(); ++x) visit(grid.index(x, y, z), at(x, y, z), at(c.x() + x / f, y / f, z / f));
+}
+
+}  // namespace
+
 std::vector<std::uint8_t> occupancyTexels(const MacrocellGrid& grid, const std::vector<std::uint8_t>& occupancy,
                                           osg::Vec3i& size)
 {
     if (occupancy.size() != grid.size()) throw std::invalid_argument("occupancy and macrocell grid differ in size");
-    const int f = occupancyCoarseFactor;
-    const osg::Vec3i c = grid.cells;
-    const osg::Vec3i coarse((c.x() + f - 1) / f, (c.y() + f - 1) / f, (c.z() + f - 1) / f);
-    size = osg::Vec3i(c.x() + coarse.x(), c.y(), c.z());
+    size = packedSize(grid);
     std::vector<std::uint8_t> texels(std::size_t(size.x()) * size.y() * size.z(), 0);
-    auto at = [&](int x, int y, int z) -> std::uint8_t& {
-        return texels[std::size_t(x) + std::size_t(size.x()) * (std::size_t(y) + std::size_t(size.y()) * std::size_t(z))];
-    };
-    for (int z = 0; z < c.z(); ++z)
-        for (int y = 0; y < c.y(); ++y)
-            for (int x = 0; x < c.x(); ++x) {
-                const std::uint8_t o = occupancy[grid.index(x, y, z)];
-                at(x, y, z) = o;
-                std::uint8_t& up = at(c.x() + x / f, y / f, z / f);
-                up = std::max(up, o);
-            }
+    forEachPackedCell(grid, size, [&](std::size_t cell, std::size_t texel, std::size_t coarse) {
+        texels[texel] = occupancy[cell];
+        texels[coarse] = std::max(texels[coarse], occupancy[cell]);
+    });
     return texels;
+}
+
+std::vector<osg::Vec2f> rangeTexels(const MacrocellGrid& grid, osg::Vec3i& size)
+{
+    constexpr float inf = std::numeric_limits<float>::infinity();
+    size = packedSize(grid);
+    std::vector<osg::Vec2f> texels(std::size_t(size.x()) * size.y() * size.z(), osg::Vec2f(inf, -inf));
+    forEachPackedCell(grid, size, [&](std::size_t cell, std::size_t texel, std::size_t coarse) {
+        texels[texel] = osg::Vec2f(grid.lo[cell], grid.hi[cell]);
+        texels[coarse] = osg::Vec2f(std::min(texels[coarse].x(), grid.lo[cell]), std::max(texels[coarse].y(), grid.hi[cell]));
+    });
+    return texels;
+}
+
+osg::ref_ptr<osg::Texture3D> makeRangeTexture(const MacrocellGrid& grid)
+{
+    osg::Vec3i size;
+    const std::vector<osg::Vec2f> texels = rangeTexels(grid, size);
+    osg::ref_ptr<osg::Image> image = new osg::Image;
+    image->allocateImage(size.x(), size.y(), size.z(), GL_RG, GL_FLOAT);
+    image->setInternalTextureFormat(GL_RG32F);
+    std::copy(texels.begin(), texels.end(), reinterpret_cast<osg::Vec2f*>(image->data()));
+    return makeTexture3D(image.get(), GL_RG32F, osg::Texture::NEAREST);
 }
 
 osg::ref_ptr<osg::Texture3D> makeOccupancyTexture(const MacrocellGrid& grid, const std::vector<std::uint8_t>& occupancy)

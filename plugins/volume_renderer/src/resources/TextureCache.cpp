@@ -62,13 +62,8 @@ osg::Texture* TextureCache::occupancy(const Volume& volume, const TransferFuncti
                                       const std::function<std::function<bool(double, double)>()>& visibility,
                                       unsigned int cull)
 {
-    Ranges& ranges = _ranges[{&volume, cellSize, apron}];
-    const bool newRanges = ranges.grid.size() == 0 || ranges.modified != volume.modifiedCount();
-    if (newRanges) {
-        ranges.grid = buildMacrocellGrid(volume, cellSize, apron);
-        ranges.modified = volume.modifiedCount();
-    }
-    ranges.lastCull = cull;
+    bool newRanges = false;
+    const Ranges& ranges = rangesOf(volume, cellSize, apron, cull, newRanges);
     Occupancy& o = _occupancies[{&volume, &transfer, cellSize, apron}];
     if (!o.texture || newRanges || o.volumeModified != volume.modifiedCount() ||
         o.transferModified != transfer.modifiedCount() || o.key != key) {
@@ -84,6 +79,28 @@ osg::Texture* TextureCache::occupancy(const Volume& volume, const TransferFuncti
     return o.texture.get();
 }
 
+TextureCache::Ranges& TextureCache::rangesOf(const Volume& volume, int cellSize, int apron, unsigned int cull,
+                                             bool& rebuilt)
+{
+    Ranges& ranges = _ranges[{&volume, cellSize, apron}];
+    rebuilt = ranges.grid.size() == 0 || ranges.modified != volume.modifiedCount();
+    if (rebuilt) {
+        ranges.grid = buildMacrocellGrid(volume, cellSize, apron);
+        ranges.texture = nullptr;
+        ranges.modified = volume.modifiedCount();
+    }
+    ranges.lastCull = cull;
+    return ranges;
+}
+
+osg::Texture* TextureCache::ranges(const Volume& volume, int cellSize, int apron, unsigned int cull)
+{
+    bool rebuilt = false;
+    Ranges& ranges = rangesOf(volume, cellSize, apron, cull, rebuilt);
+    if (!ranges.texture) ranges.texture = makeRangeTexture(ranges.grid);
+    return ranges.texture.get();
+}
+
 void TextureCache::endCull(unsigned int cull)
 {
     dropStale(_volumes, cull);
@@ -92,10 +109,19 @@ void TextureCache::endCull(unsigned int cull)
     dropStale(_occupancies, cull);
 }
 
+std::size_t TextureCache::count() const
+{
+    std::size_t rangeTextures = 0;
+    for (const auto& [key, r] : _ranges) rangeTextures += r.texture ? 1 : 0;
+    return _volumes.size() + _tables.size() + _occupancies.size() + rangeTextures;
+}
+
 std::size_t TextureCache::bytes() const
 {
     std::size_t occupancy = 0;
     for (const auto& [key, o] : _occupancies) occupancy += o.texture->getImage()->getTotalSizeInBytes();
+    for (const auto& [key, r] : _ranges)
+        if (r.texture) occupancy += r.texture->getImage()->getTotalSizeInBytes();
     return imageBytes(_volumes) + imageBytes(_tables) + occupancy;
 }
 

@@ -32,12 +32,14 @@ public:
     osg::Texture* occupancy(const Volume& volume, const TransferFunction& transfer, int cellSize, int apron,
                             const std::string& key, const std::function<std::function<bool(double, double)>()>& visibility,
                             unsigned int cull);
+    /// The value-range texture of `volume` in macrocells of `cellSize` voxels with `apron`.
+    osg::Texture* ranges(const Volume& volume, int cellSize, int apron, unsigned int cull);
     /// Occupancy grids built so far (each TF or classification change builds one).
     unsigned int occupancyBuilds() const { return _occupancyBuilds; }
     /// Frees what the last few cull traversals before `cull` did not use.
     void endCull(unsigned int cull);
     /// Textures held.
-    std::size_t count() const { return _volumes.size() + _tables.size() + _occupancies.size(); }
+    std::size_t count() const;
     /// Bytes of texture storage held.
     std::size_t bytes() const;
 
@@ -55,10 +57,13 @@ private:
     struct Ranges
     {
         MacrocellGrid grid;
+        osg::ref_ptr<osg::Texture3D> texture;  ///< made on the first ranges() call
         unsigned int modified = 0;
         unsigned int lastCull = 0;
     };
     std::map<std::tuple<const Volume*, int, int>, Ranges> _ranges;
+    /// The grid of `volume`, (re)built when missing or the volume changed.
+    Ranges& rangesOf(const Volume& volume, int cellSize, int apron, unsigned int cull, bool& rebuilt);
     struct Occupancy
     {
         osg::ref_ptr<const Volume> volume;
