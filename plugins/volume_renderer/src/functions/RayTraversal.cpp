@@ -81,6 +81,7 @@ void registerRayTraversalFunctions(ShaderFunctionRegistry& registry)
     // The projections never shade; MIP and MinIP leap over what cannot pass their running extremum.
     for (const char* name : {"mip", "minip"}) {
         ShaderFunction extremum = traversal(name, {"Reconstruction", "Classification", "ClipPosition", "Acceleration"});
+        extremum.includes.push_back("RayTraversal/extremum.glsl");
         extremum.traits.skips = "extremum";
         registry.add(extremum);
     }
@@ -103,8 +104,9 @@ void registerRayTraversalFunctions(ShaderFunctionRegistry& registry)
     };
     registry.add(gmip);
 
-    ShaderFunction iso = traversal("isosurface", compositing, {{"volren_isoTexel", "float", ""}});
+    ShaderFunction iso = traversal("isosurface", skipping, {{"volren_isoTexel", "float", ""}});
     iso.traits.writesDepth = true;
+    iso.traits.skips = "extremum";  // leaps over cells whose values stay below the iso value
     iso.bind = [](BindContext& c) {
         bindMarching(c);
         const double stored = (isoValueOf(c) - c.volume.rescaleIntercept()) / c.volume.rescaleSlope();

@@ -1,0 +1,36 @@
+// RayTraversal/extremum.glsl (included by mip and minip): the largest (maximum) or smallest
+// reconstructed scalar along the ray, sampled at the segment midpoints of the DVR traversal;
+// clipped and NaN samples are ignored, found tells whether any sample counted. Once a value is
+// found (before, a sample of -inf or +inf still counts as found) the Acceleration leaps over
+// cells whose values cannot reach past it.
+float volren_extremum(vec3 origin, vec3 dir, float tNear, float tFar, float jitter, bool maximum, out bool found)
+{
+    float best = maximum ? -3.4e38 : 3.4e38;
+    found = false;
+    VolrenMarch m;
+    if (!volren_beginMarch(dir, tNear, tFar, jitter, m)) return best;
+    float tRecheck = -1e30;
+    for (int i = 0; i < m.count;) {
+        int next = i + 1;
+        float segStart = volren_segmentStart(m, i, tNear, tFar);
+        float segEnd = volren_segmentEnd(m, i, tFar);
+        float tMid = 0.5 * (segStart + segEnd);
+        bool take = segEnd > segStart;
+        if (take && found && tMid >= tRecheck) {
+            float tNext = volren_skip(origin, dir, tMid, tFar, best, maximum, tRecheck);
+            if (tNext >= tFar) break;
+            if (tNext > tMid) {
+                next = max(next, volren_segmentFrom(m, tNext));
+                take = false;
+            }
+        }
+        vec3 p = origin + dir * tMid;
+        if (take && !volren_clipPosition(p)) {
+            float s = volren_fetchScalar(p);
+            if (maximum ? s > best : s < best) best = s;  // NaN compares false and is skipped
+            found = found || !isnan(s);
+        }
+        i = next;
+    }
+    return best;
+}
