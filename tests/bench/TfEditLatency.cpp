@@ -1,9 +1,11 @@
 // How long a transfer-function edit takes to reach the screen: the default scene rendered
 // headlessly; frames after an edit (a control point moved, as a drag in the editor does) against
 // frames without one, alternating, in one run. The extra time is the TF table's rebuild and
-// upload; the frame itself is the rest.
-// Usage: tf_edit_latency [WIDTHxHEIGHT] [ROUNDS]
+// upload and the occupancy grid's rebuild (empty-space skipping); the frame itself is the rest.
+// Also the macrocell value-range grid's build, once per volume, on the CPU.
+// Usage: tf_edit_latency [WIDTHxHEIGHT] [ROUNDS] [--no-skipping]
 #include <volume_model/ReadVolume.h>
+#include <volume_renderer/MacrocellGrid.h>
 #include <volume_renderer/OffscreenRenderer.h>
 
 #include <osg/NodeVisitor>
@@ -13,6 +15,7 @@
 #include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <string>
 #include <vector>
 
 namespace {
@@ -30,6 +33,7 @@ int main(int argc, char** argv)
     int width = 512, height = 512, rounds = 9;
     if (argc > 1 && std::sscanf(argv[1], "%dx%d", &width, &height) != 2) return std::cerr << "bad size\n", 2;
     if (argc > 2) rounds = std::max(1, std::atoi(argv[2]));
+    const bool skipping = !(argc > 3 && std::string(argv[3]) == "--no-skipping");
     volren::registerPluginPath();
     osg::ref_ptr<osg::Node> scene = osgDB::readRefNodeFile(std::string(VOLREN_SOURCE_DIR) + "/scenes/default.osgt");
     if (!scene) return std::cerr << "cannot read scenes/default.osgt\n", 1;
@@ -52,6 +56,7 @@ int main(int argc, char** argv)
     } finder;
     scene->accept(finder);
     auto* tf = const_cast<volren::TransferFunction*>(finder.node->getTransferFunction());
+    if (!skipping) finder.node->settings.forceNull.insert("Acceleration");
     for (int i = 0; i < 2; ++i) renderer.renderFrame();  // warm-up
 
     std::vector<double> edited, plain;
@@ -68,8 +73,19 @@ int main(int argc, char** argv)
         renderer.renderFrame();
         plain.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - again).count());
     }
-    std::cout << "default scene " << width << "x" << height << ", " << rounds << " rounds (" << renderer.contextDescription()
+    std::vector<double> grid;
+    const volren::Volume& volume = *finder.node->getVolume();
+    for (int r = 0; r < rounds; ++r) {
+        const auto start = std::chrono::steady_clock::now();
+        const volren::MacrocellGrid g = volren::buildMacrocellGrid(volume, finder.node->settings.macrocellSize, 1);
+        grid.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+        if (g.size() == 0) return 1;
+    }
+    std::cout << "default scene " << width << "x" << height << ", " << rounds << " rounds, skipping "
+              << (skipping ? "on" : "off") << " (" << renderer.contextDescription()
               << ")\nedit to screen (frame after an edit): " << median(edited) << " ms median\n"
-              << "frame without an edit:               " << median(plain) << " ms median\n";
+              << "frame without an edit:               " << median(plain) << " ms median\n"
+              << "macrocell grid build (CPU, once per volume of " << volume.voxelCount() << " voxels): " << median(grid)
+              << " ms median\n";
     return 0;
 }
