@@ -11,6 +11,7 @@
 
 #include <volume_model/ReadVolume.h>
 
+#include <glm/gtc/packing.hpp>
 #include <osg/LightSource>
 
 #include <cmath>
@@ -106,6 +107,29 @@ TEST(MacrocellGrid, TheCoarseLevelIsOccupiedWhereAnyOfItsCellsIs)
                 }
             }
     EXPECT_EQ(occupiedCoarse, 2);
+}
+
+TEST(MacrocellGrid, HalfFloatBoundsRoundOutwards)
+{
+    std::mt19937 random(3);
+    std::uniform_real_distribution<float> value(-70000.0f, 70000.0f);
+    for (int i = 0; i < 20000; ++i) {
+        const float v = i < 10000 ? value(random) : value(random) * 1e-6f;  // large and tiny
+        const float lo = glm::unpackHalf1x16(halfBound(v, false)), hi = glm::unpackHalf1x16(halfBound(v, true));
+        ASSERT_LE(lo, v) << v;
+        ASSERT_GE(hi, v) << v;
+        if (std::abs(v) < 60000.0f) {  // one half step apart at most
+            ASSERT_LE(hi - lo, std::abs(v) * 2e-3f + 1.2e-7f) << v;
+        }
+    }
+    for (float v : {0.0f, 1.0f, -1.0f, 200.0f / 255.0f, 1.0f / 65535.0f}) {
+        EXPECT_LE(glm::unpackHalf1x16(halfBound(v, false)), v);
+        EXPECT_GE(glm::unpackHalf1x16(halfBound(v, true)), v);
+    }
+    EXPECT_EQ(glm::unpackHalf1x16(halfBound(std::numeric_limits<float>::infinity(), true)), std::numeric_limits<float>::infinity());
+    EXPECT_EQ(glm::unpackHalf1x16(halfBound(-std::numeric_limits<float>::infinity(), false)), -std::numeric_limits<float>::infinity());
+    EXPECT_EQ(glm::unpackHalf1x16(halfBound(1e6f, true)), std::numeric_limits<float>::infinity());
+    EXPECT_EQ(glm::unpackHalf1x16(halfBound(1e6f, false)), 65504.0f);
 }
 
 class EmptySpaceSkipping : public RenderFixture

@@ -26,7 +26,7 @@ struct RenderSettings;
 /// - OccupancyGrid: per macrocell of the volume, whether any sample in it may be visible under
 ///   the current transfer function (MacrocellGrid.h), as an R8 3D texture read with texelFetch;
 /// - MacrocellRanges: per macrocell the smallest and largest texel value its samples can read,
-///   as an RG32F 3D texture read with texelFetch (MacrocellGrid.h).
+///   as an RG16F 3D texture (bounds rounded outwards) read with texelFetch (MacrocellGrid.h).
 enum class AuxData
 {
     VolumeTexture,

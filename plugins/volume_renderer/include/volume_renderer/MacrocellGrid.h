@@ -53,7 +53,12 @@ std::vector<std::uint8_t> occupancyTexels(const MacrocellGrid& grid, const std::
 /// then the coarse level (the smallest lo and largest hi of its cells).
 std::vector<osg::Vec2f> rangeTexels(const MacrocellGrid& grid, osg::Vec3i& size);
 
-/// RG32F 3D texture of the grid's ranges with their coarse level (rangeTexels; nearest, texelFetch).
+/// The half float nearest to `v` on the side of a bound: not below it for an upper bound, not
+/// above it for a lower one (infinite beyond the half range; NaN gives the empty bound).
+std::uint16_t halfBound(float v, bool upper);
+
+/// RG16F 3D texture of the grid's ranges with their coarse level (rangeTexels; nearest,
+/// texelFetch), each lo rounded down and hi up to a half float, so the ranges still hold.
 osg::ref_ptr<osg::Texture3D> makeRangeTexture(const MacrocellGrid& grid);
 
 /// R8 3D texture of an occupancy with its coarse level (occupancyTexels: nearest filtering,

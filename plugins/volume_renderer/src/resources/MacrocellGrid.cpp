@@ -3,6 +3,7 @@
 #include <volume_renderer/MacrocellGrid.h>
 #include <volume_renderer/VolumeTextures.h>
 
+#include <glm/gtc/packing.hpp>
 #include <osg/Image>
 
 #include <algorithm>
@@ -175,15 +176,31 @@ std::vector<osg::Vec2f> rangeTexels(const MacrocellGrid& grid, osg::Vec3i& size)
     return texels;
 }
 
+std::uint16_t halfBound(float v, bool upper)
+{
+    if (std::isnan(v)) return glm::packHalf1x16(upper ? std::numeric_limits<float>::infinity() : -std::numeric_limits<float>::infinity());
+    std::uint16_t h = glm::packHalf1x16(v);  // nearest; out of range: infinite
+    const float back = glm::unpackHalf1x16(h);
+    if (upper ? back >= v : back <= v) return h;
+    // One step of the half's magnitude towards the bound: its sign bit decides the direction.
+    const bool negative = (h & 0x8000) != 0;
+    if ((h & 0x7fff) == 0) return upper ? std::uint16_t(0x0001) : std::uint16_t(0x8001);  // past zero
+    return (upper != negative) ? std::uint16_t(h + 1) : std::uint16_t(h - 1);
+}
+
 osg::ref_ptr<osg::Texture3D> makeRangeTexture(const MacrocellGrid& grid)
 {
     osg::Vec3i size;
     const std::vector<osg::Vec2f> texels = rangeTexels(grid, size);
     osg::ref_ptr<osg::Image> image = new osg::Image;
-    image->allocateImage(size.x(), size.y(), size.z(), GL_RG, GL_FLOAT);
-    image->setInternalTextureFormat(GL_RG32F);
-    std::copy(texels.begin(), texels.end(), reinterpret_cast<osg::Vec2f*>(image->data()));
-    return makeTexture3D(image.get(), GL_RG32F, osg::Texture::NEAREST);
+    image->allocateImage(size.x(), size.y(), size.z(), GL_RG, GL_HALF_FLOAT);
+    image->setInternalTextureFormat(GL_RG16F);
+    auto* out = reinterpret_cast<std::uint16_t*>(image->data());
+    for (std::size_t i = 0; i < texels.size(); ++i) {
+        out[2 * i] = halfBound(texels[i].x(), false);
+        out[2 * i + 1] = halfBound(texels[i].y(), true);
+    }
+    return makeTexture3D(image.get(), GL_RG16F, osg::Texture::NEAREST);
 }
 
 osg::ref_ptr<osg::Texture3D> makeOccupancyTexture(const MacrocellGrid& grid, const std::vector<std::uint8_t>& occupancy)
