@@ -73,6 +73,11 @@ std::string settingsHelp(const CompositionPolicy& policy)
         for (std::size_t i = 0; i < names.size(); ++i) out << (i ? ", " : "") << names[i];
         if (!s.isTemplate && CompositionPolicy::neededImplementation(s.name) != CompositionPolicy::defaultImplementation(s.name))
             out << "   [" << CompositionPolicy::neededImplementation(s.name) << " when the scene needs it]";
+        std::string leaps;  // implementations chosen by the traversal's leaps (Acceleration)
+        for (const std::string& name : names)
+            if (const ShaderFunction* f = policy.registry().find(s.name, name); f && !f->traits.skips.empty())
+                leaps += (leaps.empty() ? "" : ", ") + name + " where the traversal leaps by " + f->traits.skips;
+        if (!leaps.empty()) out << "   [" << leaps << "]";
         out << (s.isTemplate ? "   [one instance per clip shape, chosen by the scene]" : "") << "\n";
     }
     return out.str();
