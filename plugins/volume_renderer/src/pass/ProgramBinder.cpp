@@ -2,6 +2,7 @@
 
 #include <volume_renderer/SampleDistance.h>
 
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -40,7 +41,9 @@ osg::Texture* occupancyFor(const BindContext& context, const std::vector<const B
     if (!classification || !classification->mayShow)  // the policy's rules exclude this
         throw std::logic_error("occupancy grid without a Classification mirror");
     // What the classification's opacity depends on besides the volume and the TF.
-    const std::string key = classification->name + " " + std::to_string(context.settings.threshold);
+    char threshold[32];
+    std::snprintf(threshold, sizeof(threshold), "%a", context.settings.threshold);  // exact
+    const std::string key = classification->name + " " + threshold;
     return textures.occupancy(context.volume, context.transfer, context.settings.macrocellSize, footprint, key,
                               [&] { return classification->mayShow(context); }, cull);
 }

@@ -64,7 +64,7 @@ osg::Texture* TextureCache::occupancy(const Volume& volume, const TransferFuncti
 {
     bool newRanges = false;
     const Ranges& ranges = rangesOf(volume, cellSize, apron, cull, newRanges);
-    Occupancy& o = _occupancies[{&volume, &transfer, cellSize, apron}];
+    Occupancy& o = _occupancies[{&volume, &transfer, cellSize, apron, key}];
     if (!o.texture || newRanges || o.volumeModified != volume.modifiedCount() ||
         o.transferModified != transfer.modifiedCount() || o.key != key) {
         o.volume = &volume;

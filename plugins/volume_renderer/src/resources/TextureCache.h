@@ -73,7 +73,7 @@ private:
         std::string key;
         unsigned int lastCull = 0;
     };
-    std::map<std::tuple<const Volume*, const TransferFunction*, int, int>, Occupancy> _occupancies;
+    std::map<std::tuple<const Volume*, const TransferFunction*, int, int, std::string>, Occupancy> _occupancies;
     unsigned int _occupancyBuilds = 0;
 };
 
