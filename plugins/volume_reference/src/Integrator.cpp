@@ -1,0 +1,179 @@
+// The reference's integrator: per ray, front to back through the union of the media's boxes,
+// media adding along the ray, halving the step until two results agree within the tolerance.
+#include "Integrator.h"
+
+#include <osg/LightSource>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace volren::reference {
+
+namespace {
+
+/// The medium of `placed`, lit by the scene's first `lightCount` lights (eye-fixed ones placed
+/// by the camera: `eyeToWorld`).
+Medium mediumOf(const ReferenceScene& scene, const ReferenceScene::Placed& placed, std::size_t lightCount,
+                const osg::Matrixd& eyeToWorld, const ReferenceOptions& options)
+{
+    const auto& node = static_cast<const VolumeNode&>(*placed.node);
+    Medium m;
+    m.volume = node.getVolume();
+    m.tf = node.getTransferFunction();
+    m.worldToLocal = osg::Matrixd::inverse(placed.localToWorld);
+    m.size = toGlm(m.volume->worldSize());
+    const osg::Vec3i& d = m.volume->dims();
+    m.dims = {d.x(), d.y(), d.z()};
+    m.unitLength = m.volume->minSpacing();
+    m.domainMin = m.tf->domainMin();
+    m.domainMax = m.tf->domainMax();
+    setShading(m, placed, lightCount > 0);
+    m.gradientKind = options.gradient;
+    for (std::size_t i = 0; i < lightCount; ++i) {
+        const auto& source = static_cast<const osg::LightSource&>(*scene.lights[i].node);
+        const osg::Matrixd toLocal =
+            (source.getReferenceFrame() == osg::LightSource::ABSOLUTE_RF ? eyeToWorld : scene.lights[i].localToWorld) *
+            m.worldToLocal;
+        const osg::Vec4d p = source.getLight()->getPosition();
+        glm::dvec4 position;
+        if (p.w() == 0.0) {
+            osg::Vec3d d = osg::Matrixd::transform3x3(osg::Vec3d(p.x(), p.y(), p.z()), toLocal);
+            d.normalize();
+            position = glm::dvec4(toGlm(d), 0.0);
+        } else {
+            position = glm::dvec4(toGlm(osg::Vec3d(p.x(), p.y(), p.z()) / p.w() * toLocal), 1.0);
+        }
+        const osg::Vec4 c = source.getLight()->getDiffuse();
+        m.lights.emplace_back(position, glm::dvec3(c.r(), c.g(), c.b()));
+    }
+    return m;
+}
+
+}  // namespace
+
+Integrator::Integrator(const ReferenceScene& scene, const ReferenceCamera& camera, const ReferenceOptions& options)
+    : _options(options)
+{
+    _unit = std::numeric_limits<double>::infinity();
+    const std::size_t lightCount = options.lighting ? std::min<std::size_t>(scene.lights.size(), 8) : 0;
+    const osg::Matrixd eyeToWorld = osg::Matrixd::inverse(camera.view);
+    for (const auto& placed : scene.volumes) {
+        Medium m = mediumOf(scene, placed, lightCount, eyeToWorld, options);
+        _unit = std::min(_unit, m.unitLength);
+        _media.push_back(m);
+    }
+    for (const auto& placed : scene.clips)
+        _clips.push_back({static_cast<const ClipNode*>(placed.node.get()), osg::Matrixd::inverse(placed.localToWorld)});
+}
+
+glm::dvec4 Integrator::integrate(const Ray& ray, double end, bool& converged, double& finest) const
+{
+    double u0 = 1.0, u1 = 0.0;  // the union of the boxes along the ray, as fractions of it
+    for (const Medium& m : _media) {
+        double a = 0.0, b = 1.0;
+        if (boxSpan(m, ray, a, b)) u0 = std::min(u0, a), u1 = std::max(u1, b);
+    }
+    u1 = std::min(u1, end);
+    converged = true;
+    if (!(u1 > u0)) return glm::dvec4(0.0);
+    double step = _options.firstStep * _unit;
+    glm::dvec4 coarse = march(ray, u0, u1, step);
+    for (;;) {
+        step *= 0.5;
+        const glm::dvec4 fine = march(ray, u0, u1, step);
+        double change = 0.0;
+        for (int c = 0; c < 4; ++c) change = std::max(change, std::abs(fine[c] - coarse[c]));
+        finest = std::min(finest, step);
+        if (change <= _options.tolerance) return fine;
+        if (step <= _options.finestStep * _unit) {
+            converged = false;
+            return fine;
+        }
+        coarse = fine;
+    }
+}
+
+bool Integrator::boxSpan(const Medium& m, const Ray& ray, double& a, double& b)
+{
+    const osg::Vec3d o = osg::Vec3d(ray.origin.x, ray.origin.y, ray.origin.z) * m.worldToLocal;
+    const osg::Vec3d e = osg::Vec3d(ray.origin.x + ray.direction.x, ray.origin.y + ray.direction.y,
+                                    ray.origin.z + ray.direction.z) * m.worldToLocal;
+    const osg::Vec3d d = e - o;
+    for (int axis = 0; axis < 3; ++axis) {
+        const double lo = -0.5 * m.size[axis], hi = 0.5 * m.size[axis];
+        if (d[axis] == 0.0) {
+            if (o[axis] < lo || o[axis] > hi) return false;
+            continue;
+        }
+        double t0 = (lo - o[axis]) / d[axis], t1 = (hi - o[axis]) / d[axis];
+        if (t0 > t1) std::swap(t0, t1);
+        a = std::max(a, t0);
+        b = std::min(b, t1);
+    }
+    return b > a;
+}
+
+glm::dvec4 Integrator::march(const Ray& ray, double u0, double u1, double step) const
+{
+    const double start = u0 * ray.length, end = u1 * ray.length;
+    const auto count = std::size_t(std::ceil((end - start) / step));
+    const double h = (end - start) / double(count);  // equal steps that end exactly at the exit
+    glm::dvec3 colour(0.0);
+    double transmittance = 1.0;
+    for (std::size_t k = 0; k < count && transmittance > 0.0; ++k) {
+        const double s = start + (double(k) + 0.5) * h;
+        const glm::dvec3 p = ray.origin + ray.direction * (s / ray.length);
+        double extinction = 0.0;  // sum over the media
+        glm::dvec3 emission(0.0);  // sum of extinction x colour
+        bool opaque = false;
+        glm::dvec3 opaqueColour(0.0);
+        if (!kept(p)) continue;
+        for (const Medium& m : _media) {
+            const osg::Vec3d localPoint = osg::Vec3d(p.x, p.y, p.z) * m.worldToLocal;
+            const glm::dvec3 local = toGlm(localPoint);
+            const glm::dvec3 tc = local / m.size + 0.5;
+            if (tc.x < 0 || tc.y < 0 || tc.z < 0 || tc.x > 1 || tc.y > 1 || tc.z > 1) continue;
+            const double v = m.value(tc);
+            if (std::isnan(v)) continue;  // NaN voxels are empty
+            const osg::Vec4 rgba = m.tf->evaluate(std::clamp(v, m.domainMin, m.domainMax));
+            const double alpha = rgba.a();
+            if (alpha <= 0.0) continue;
+            glm::dvec3 c(rgba.r(), rgba.g(), rgba.b());
+            if (m.shading != Shading::None) {
+                const glm::dvec3 view =
+                    -glm::normalize(toGlm(osg::Matrixd::transform3x3(osg::Vec3d(ray.direction.x, ray.direction.y,
+                                                                                 ray.direction.z),
+                                                                      m.worldToLocal)));
+                c = m.shade(tc, local, view, c, alpha);
+            }
+            if (alpha >= 1.0) {  // infinite extinction: opaque at this point
+                opaque = true;
+                opaqueColour = c;
+                continue;
+            }
+            const double sigma = -std::log1p(-alpha) / m.unitLength;
+            extinction += sigma;
+            emission += sigma * c;
+        }
+        if (opaque) {
+            colour += transmittance * opaqueColour;
+            transmittance = 0.0;
+            break;
+        }
+        if (extinction <= 0.0) continue;
+        const double a = -std::expm1(-extinction * h);  // 1 - exp(-σh), exact for small σh too
+        colour += transmittance * a * (emission / extinction);
+        transmittance *= 1.0 - a;
+    }
+    return glm::dvec4(colour, 1.0 - transmittance);
+}
+
+bool Integrator::kept(const glm::dvec3& p) const
+{
+    for (const Clip& c : _clips)
+        if (!c.node->keeps(osg::Vec3d(p.x, p.y, p.z) * c.worldToLocal)) return false;
+    return true;
+}
+
+}  // namespace volren::reference
