@@ -24,11 +24,9 @@ vec4 volren_traverse(vec3 origin, vec3 dir, float tNear, float tFar, float jitte
             float reversedRecheck;
             float tNext = -volren_skip(origin, -dir, -tMid, -tNear, reversedRecheck);
             tRecheck = -reversedRecheck;
-            if (tNext <= tNear) break;
-            if (tNext < tMid) {
-                next = min(next, volren_segmentUpTo(m, tNext));
-                visible = false;
-            }
+            int at = volren_leapBack(m, i, tMid, tNext, tNear);
+            visible = at == i;
+            next = visible ? next : at;
         }
         vec3 p = origin + dir * tMid;
         if (visible && !volren_clipPosition(p)) {

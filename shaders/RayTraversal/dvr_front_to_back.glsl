@@ -24,12 +24,9 @@ vec4 volren_traverse(vec3 origin, vec3 dir, float tNear, float tFar, float jitte
         float tMid = 0.5 * (segStart + segEnd);
         bool visible = lenT > 0.0;
         if (visible && tMid >= tRecheck) {  // empty-space skipping: leap to the next sample that may show
-            float tNext = volren_skip(origin, dir, tMid, tFar, tRecheck);
-            if (tNext >= tFar) break;
-            if (tNext > tMid) {
-                next = max(next, volren_segmentFrom(m, tNext));
-                visible = false;
-            }
+            int at = volren_leap(m, i, tMid, volren_skip(origin, dir, tMid, tFar, tRecheck), tFar);
+            visible = at == i;
+            next = visible ? next : at;
         }
         vec3 p = origin + dir * tMid;
         if (visible && !volren_clipPosition(p)) {

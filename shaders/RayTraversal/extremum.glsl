@@ -17,12 +17,9 @@ float volren_extremum(vec3 origin, vec3 dir, float tNear, float tFar, float jitt
         float tMid = 0.5 * (segStart + segEnd);
         bool take = segEnd > segStart;
         if (take && found && tMid >= tRecheck) {
-            float tNext = volren_skip(origin, dir, tMid, tFar, best, maximum, tRecheck);
-            if (tNext >= tFar) break;
-            if (tNext > tMid) {
-                next = max(next, volren_segmentFrom(m, tNext));
-                take = false;
-            }
+            int at = volren_leap(m, i, tMid, volren_skip(origin, dir, tMid, tFar, best, maximum, tRecheck), tFar);
+            take = at == i;
+            next = take ? next : at;
         }
         vec3 p = origin + dir * tMid;
         if (take && !volren_clipPosition(p)) {

@@ -42,6 +42,20 @@ int volren_segmentUpTo(VolrenMarch m, float t)
     return int(clamp(floor((t - m.firstEnd) / m.stepT + 0.5), -1.0, float(m.count)));
 }
 
+// Where a march goes on after volren_skip answered tNext for the sample of segment i at tMid:
+// i itself when that sample may show, else the first segment at or past tNext (count, or -1
+// marching backwards, when nothing before the ray's end may show).
+int volren_leap(VolrenMarch m, int i, float tMid, float tNext, float tFar)
+{
+    if (tNext >= tFar) return m.count;
+    return tNext > tMid ? max(i + 1, volren_segmentFrom(m, tNext)) : i;
+}
+int volren_leapBack(VolrenMarch m, int i, float tMid, float tNext, float tNear)
+{
+    if (tNext <= tNear) return -1;
+    return tNext < tMid ? min(i - 1, volren_segmentUpTo(m, tNext)) : i;
+}
+
 // Adds a segment's optical depth dTau to depth, Kahan-compensated (tiny depths stay exact
 // along rays of millions of samples).
 void volren_addDepth(float dTau, inout float depth, inout float compensation)

@@ -64,6 +64,12 @@ public:
 
     /// How a Shading implementation uses lights (Optional when its traits are unknown).
     static LightUse lightUseOf(const ShaderFunction& shading);
+    /// Why `acceleration` cannot leap in a composition of these implementations ("" when it can):
+    /// the traversal must take its kind of leaps (a traversal of unknown traits may take any),
+    /// the Reconstruction must stay within the voxels it reads, and leaps by opacity need the
+    /// Classification's CPU mirror. The one skipping rule of choose() and the validity check.
+    static std::string skippingMismatch(const ShaderFunction& acceleration, const ShaderFunction& traversal,
+                                        const ShaderFunction& classification, const ShaderFunction& reconstruction);
 
     /// The composition for a volume with node `settings` given the `offer` and the `pass`.
     ChosenComposition choose(const RenderSettings& settings, const SceneOffer& offer, const PassSettings& pass) const;

@@ -114,15 +114,32 @@ ChosenComposition CompositionPolicy::choose(const RenderSettings& settings, cons
     return out;
 }
 
+std::string CompositionPolicy::skippingMismatch(const ShaderFunction& acceleration, const ShaderFunction& traversal,
+                                                const ShaderFunction& classification,
+                                                const ShaderFunction& reconstruction)
+{
+    if (acceleration.traits.skips.empty()) return {};
+    const std::string self = acceleration.slot + "/" + acceleration.name;
+    if (traversal.traits.calls && traversal.traits.skips != acceleration.traits.skips)
+        return self + " leaps by " + acceleration.traits.skips + ", RayTraversal/" + traversal.name +
+               (traversal.traits.skips.empty() ? " takes no leaps" : " by " + traversal.traits.skips);
+    if (acceleration.traits.skips == "opacity" && !classification.mayShow)
+        return self + " needs a Classification with a CPU opacity mirror, not " + classification.name;
+    if (reconstruction.traits.footprint < 0)
+        return self + " needs a Reconstruction bounded by its voxels, not " + reconstruction.name;
+    return {};
+}
+
 bool CompositionPolicy::skippingFits(const Composition& c, const ShaderFunction& acceleration) const
 {
+    // A default only where the traversal is known to take these leaps.
     const ShaderFunction* marcher = _registry.find("RayTraversal", c.functionFor("RayTraversal"));
-    if (!marcher || !marcher->traits.calls || !marcher->mayCall("Acceleration")) return false;
-    if (acceleration.traits.skips.empty() || acceleration.traits.skips != marcher->traits.skips) return false;
     const ShaderFunction* classification = _registry.find("Classification", c.functionFor("Classification"));
     const ShaderFunction* reconstruction = _registry.find("Reconstruction", c.functionFor("Reconstruction"));
-    const bool mirror = acceleration.traits.skips != "opacity" || (classification && classification->mayShow);
-    return mirror && reconstruction && reconstruction->traits.footprint >= 0;
+    if (!marcher || !classification || !reconstruction || !marcher->traits.calls || !marcher->mayCall("Acceleration") ||
+        acceleration.traits.skips.empty())
+        return false;
+    return skippingMismatch(acceleration, *marcher, *classification, *reconstruction).empty();
 }
 
 void CompositionPolicy::chooseLighting(ChosenComposition& out, const RenderSettings& settings, const SceneOffer& offer,

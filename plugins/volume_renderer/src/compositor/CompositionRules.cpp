@@ -115,23 +115,11 @@ bool CompositionPolicy::check(const SlotFunctions& chosen, unsigned int lightCou
                     return f->slot + "/" + f->name + " needs a real " + all[std::size_t(__builtin_ctz(missing))].name;
                 });
     }
-    // Skipping infers from a region's value range: the traversal must take the leaps the
-    // Acceleration makes, the Reconstruction's values must stay within the voxels it reads, and
-    // leaps by opacity need the Classification's CPU mirror.
-    if (const ShaderFunction* f = chosen[rules.acceleration].front(); !f->traits.skips.empty() && real(rules.acceleration)) {
-        const ShaderFunction* marcher = chosen[rules.traversal].front();
-        const ShaderFunction* classification = chosen[rules.classification].front();
-        const ShaderFunction* reconstruction = chosen[rules.reconstruction].front();
-        if (marcher->traits.calls && marcher->traits.skips != f->traits.skips)
-            return reject([&] {
-                return f->slot + "/" + f->name + " leaps by " + f->traits.skips + ", RayTraversal/" + marcher->name +
-                       (marcher->traits.skips.empty() ? " takes no leaps" : " by " + marcher->traits.skips);
-            });
-        if (f->traits.skips == "opacity" && !classification->mayShow)
-            return reject([&] { return f->slot + "/" + f->name + " needs a Classification with a CPU opacity mirror, not " + classification->name; });
-        if (reconstruction->traits.footprint < 0)
-            return reject([&] { return f->slot + "/" + f->name + " needs a Reconstruction bounded by its voxels, not " + reconstruction->name; });
-    }
+    if (const ShaderFunction* f = chosen[rules.acceleration].front(); !f->traits.skips.empty() && real(rules.acceleration))
+        if (std::string why = skippingMismatch(*f, *chosen[rules.traversal].front(), *chosen[rules.classification].front(),
+                                               *chosen[rules.reconstruction].front());
+            !why.empty())
+            return reject([&] { return why; });
     const ShaderFunction* shading = chosen[rules.shading].front();
     const LightUse use = (reached & (Mask(1) << rules.shading)) ? lightUseOf(*shading) : LightUse::None;
     if (use == LightUse::None && lightCount > 0)

@@ -25,6 +25,22 @@ void bindCells(BindContext& c)
     c.uniform("volren_coarseFactor", float(occupancyCoarseFactor));
 }
 
+/// A skipping over a macrocell grid texture `sampler` made from `aux`, leaping by `skips`.
+ShaderFunction gridSkipping(const std::string& name, const std::string& sampler, AuxData aux, const std::string& skips)
+{
+    return {.slot = "Acceleration",
+            .name = name,
+            .uniforms = cellUniforms,
+            .textures = {{sampler, "sampler3D"}},
+            .needs = {aux},
+            .bind =
+                [sampler, aux](BindContext& c) {
+                    bindCells(c);
+                    c.texture(sampler, c.aux.at(aux).get());
+                },
+            .traits = {.calls = SlotList{}, .skips = skips}};
+}
+
 }  // namespace
 
 void registerAccelerationFunctions(ShaderFunctionRegistry& registry)
@@ -33,28 +49,8 @@ void registerAccelerationFunctions(ShaderFunctionRegistry& registry)
 
     // The pass builds the grids from the volume's macrocell value ranges with the
     // Reconstruction's footprint as apron (and, for opacity, the Classification's CPU mirror).
-    registry.add({.slot = "Acceleration",
-                  .name = "occupancy",
-                  .uniforms = cellUniforms,
-                  .textures = {{"volren_occupancy", "sampler3D"}},
-                  .needs = {AuxData::OccupancyGrid},
-                  .bind =
-                      [](BindContext& c) {
-                          bindCells(c);
-                          c.texture("volren_occupancy", c.aux.at(AuxData::OccupancyGrid).get());
-                      },
-                  .traits = {.calls = SlotList{}, .skips = "opacity"}});
-    registry.add({.slot = "Acceleration",
-                  .name = "range",
-                  .uniforms = cellUniforms,
-                  .textures = {{"volren_cellRanges", "sampler3D"}},
-                  .needs = {AuxData::MacrocellRanges},
-                  .bind =
-                      [](BindContext& c) {
-                          bindCells(c);
-                          c.texture("volren_cellRanges", c.aux.at(AuxData::MacrocellRanges).get());
-                      },
-                  .traits = {.calls = SlotList{}, .skips = "extremum"}});
+    registry.add(gridSkipping("occupancy", "volren_occupancy", AuxData::OccupancyGrid, "opacity"));
+    registry.add(gridSkipping("range", "volren_cellRanges", AuxData::MacrocellRanges, "extremum"));
 }
 
 }  // namespace volren

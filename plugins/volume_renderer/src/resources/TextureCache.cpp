@@ -66,13 +66,12 @@ osg::Texture* TextureCache::occupancy(const Volume& volume, const TransferFuncti
     const Ranges& ranges = rangesOf(volume, cellSize, apron, cull, newRanges);
     Occupancy& o = _occupancies[{&volume, &transfer, cellSize, apron, key}];
     if (!o.texture || newRanges || o.volumeModified != volume.modifiedCount() ||
-        o.transferModified != transfer.modifiedCount() || o.key != key) {
+        o.transferModified != transfer.modifiedCount()) {
         o.volume = &volume;
         o.transfer = &transfer;
         o.texture = makeOccupancyTexture(ranges.grid, occupancyOf(ranges.grid, visibility()));
         o.volumeModified = volume.modifiedCount();
         o.transferModified = transfer.modifiedCount();
-        o.key = key;
         ++_occupancyBuilds;
     }
     o.lastCull = cull;

@@ -70,7 +70,6 @@ private:
         osg::ref_ptr<const TransferFunction> transfer;
         osg::ref_ptr<osg::Texture3D> texture;
         unsigned int volumeModified = 0, transferModified = 0;
-        std::string key;
         unsigned int lastCull = 0;
     };
     std::map<std::tuple<const Volume*, const TransferFunction*, int, int, std::string>, Occupancy> _occupancies;
