@@ -35,8 +35,8 @@ bool volren_clipPosition(vec3 pos);
 // may be visible (t itself when the sample at t may be; >= tFar when none before tFar may be).
 // The answer for t holds for samples up to tRecheck, so traversals ask again only past it.
 float volren_skip(vec3 origin, vec3 dir, float t, float tFar, out float tRecheck);
-// The same for MIP and isosurfaces (above = true) and MinIP: no sample in [t, t') can reach
-// level (be >= level; for MinIP <= level): the running maximum, the iso value, the minimum.
+// The same for MIP (above = true) and MinIP: no sample in [t, t') can pass level (be > level;
+// for MinIP < level), the ray's running maximum (minimum).
 float volren_skip(vec3 origin, vec3 dir, float t, float tFar, float level, bool above, out float tRecheck);
 
 // Jitter: offset of the first sample as a fraction of one step, in [0,1).

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Empty-space skipping side by side: each shared CT with a dense TF (the default scene's, from
-# the histogram), a sparse one (opacity only above the 99th percentile: bone, metal) and an
-# empty one (nothing visible), rendered with skipping (the default) and without it
-# (--set acceleration=null), alternating, in one run. Prints the median draw time of each, the
+# the histogram), a sparse one (opacity only above the 99th percentile: bone, metal), an empty
+# one (nothing visible), and MIP, MinIP and the isosurface with the dense TF, rendered with
+# skipping (the default) and without it (--set acceleration=null), alternating, in one run. Prints the median draw time of each, the
 # ratios, and the largest pixel difference between the two images (0 when skipping is exact).
 # Usage: tools/bench-skipping.sh [SIZE (default 256)] [ROUNDS (default 3)]
 set -euo pipefail
@@ -16,7 +16,7 @@ trap 'rm -rf "$work"' EXIT
 
 median() { sort -g | awk '{v[NR]=$1} END {print (NR % 2) ? v[(NR+1)/2] : (v[NR/2] + v[NR/2+1]) / 2}'; }
 
-printf '| dataset | TF | skipping ms | no skipping ms | ratio | max pixel difference |\n|---|---|---|---|---|---|\n'
+printf '| dataset | TF or traversal | skipping ms | no skipping ms | ratio | max pixel difference |\n|---|---|---|---|---|---|\n'
 for input in ct/bonsai.nii.gz ct/CT_AVM.nii.gz dicom/pancreas_ct_subset; do
   path="$data/$input"
   [ -e "$path" ] || { echo "skipping $input: not found" >&2; continue; }
@@ -26,20 +26,25 @@ for input in ct/bonsai.nii.gz ct/CT_AVM.nii.gz dicom/pancreas_ct_subset; do
   p99=$(sed -n 's/.*p99 \([^,]*\),.*/\1/p' <<<"$info")
   printf '%s 0 0 0 0\n%s 0 0 0 0\n%s 255 240 220 200\n' "$lo" "$p99" "$hi" >"$work/sparse.tf"
   printf '%s 0 0 0 0\n%s 0 0 0 0\n' "$lo" "$hi" >"$work/empty.tf"
-  for tf in dense sparse empty; do
-    tfArgs=()
-    [ "$tf" = dense ] || tfArgs=(--tf "$work/$tf.tf")
+  for kind in dense sparse empty mip minip isosurface; do
+    args=()  # the sparse and empty TFs, or a traversal with the dense (default) TF
+    case "$kind" in
+      sparse | empty) args=(--tf "$work/$kind.tf") ;;
+      mip | minip | isosurface) args=(--set "traversal=$kind") ;;
+    esac
     for r in $(seq "$rounds"); do
-      for accel in occupancy null; do
-        "$volren" render "$path" -o "$work/$accel.exr" --size "${size}x${size}" --frames 4 "${tfArgs[@]}" \
-          --set acceleration=$accel --stats "$work/$accel.json" >/dev/null
-        sed -n 's/.*"draw_ms_median": *\([0-9.e+-]*\).*/\1/p' "$work/$accel.json" >>"$work/$accel.ms"
+      for run in on off; do  # on: the default skipping (occupancy or range), off: acceleration=null
+        skip=()
+        [ "$run" = off ] && skip=(--set acceleration=null)
+        "$volren" render "$path" -o "$work/$run.exr" --size "${size}x${size}" --frames 4 "${args[@]}" "${skip[@]}" \
+          --stats "$work/$run.json" >/dev/null
+        sed -n 's/.*"draw_ms_median": *\([0-9.e+-]*\).*/\1/p' "$work/$run.json" >>"$work/$run.ms"
       done
     done
-    on=$(median <"$work/occupancy.ms")
-    off=$(median <"$work/null.ms")
-    maxdiff=$("$volren" compare "$work/occupancy.exr" "$work/null.exr" | sed -n 's/^max abs error: *\([^ ]*\).*/\1/p')
-    printf '| %s | %s | %.1f | %.1f | %.3f | %s |\n' "$input" "$tf" "$on" "$off" "$(awk -v a="$on" -v b="$off" 'BEGIN {print a / b}')" "$maxdiff"
+    on=$(median <"$work/on.ms")
+    off=$(median <"$work/off.ms")
+    maxdiff=$("$volren" compare "$work/on.exr" "$work/off.exr" | sed -n 's/^max abs error: *\([^ ]*\).*/\1/p')
+    printf '| %s | %s | %.1f | %.1f | %.3f | %s |\n' "$input" "$kind" "$on" "$off" "$(awk -v a="$on" -v b="$off" 'BEGIN {print a / b}')" "$maxdiff"
     rm -f "$work"/*.ms
   done
 done

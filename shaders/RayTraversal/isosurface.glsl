@@ -1,7 +1,6 @@
 // RayTraversal/isosurface: the first place where the scalar rises to the iso value,
 // refined by bisection, shaded as an opaque surface in the TF's colour at the iso value;
-// reports its ray parameter so the surface writes depth. The Acceleration leaps over cells
-// whose values stay below the iso value, landing on the sample it would have reached.
+// reports its ray parameter so the surface writes depth.
 // vec4 volren_traverse(vec3 origin, vec3 dir, float tNear, float tFar, float jitter, out float tHit)
 vec4 volren_traverse(vec3 origin, vec3 dir, float tNear, float tFar, float jitter, out float tHit)
 {
@@ -17,23 +16,10 @@ vec4 volren_traverse(vec3 origin, vec3 dir, float tNear, float tFar, float jitte
         tHit = tNear;
     } else {
         int count = int(ceil(max(tFar - tNear, 0.0) / stepT)) + 1;
-        float tRecheck = -1e30;
-        for (int i = 1; i <= count && tHit < 0.0;) {
-            int next = i + 1;
+        for (int i = 1; i <= count && tHit < 0.0; ++i) {
             float t = min(tNear + (float(i) - jitter) * stepT, tFar);
-            bool take = true;
-            if (t >= tRecheck) {  // leap over cells whose values stay below the iso value
-                float tNext = volren_skip(origin, dir, t, tFar, iso, true, tRecheck);
-                if (tNext >= tFar) break;
-                if (tNext > t) {
-                    // Land on the first sample at or past tNext, with the sample before it as tPrev.
-                    next = max(next, int(ceil((tNext - tNear) / stepT + jitter)));
-                    tPrev = min(tNear + (float(next - 1) - jitter) * stepT, tFar);
-                    take = false;
-                }
-            }
             vec3 p = origin + dir * t;
-            float s = !take || volren_clipPosition(p) ? -3.4e38 : volren_fetchScalar(p);
+            float s = volren_clipPosition(p) ? -3.4e38 : volren_fetchScalar(p);
             if (s >= iso) {
                 // Bisection between the last sample below and this one above the iso value.
                 float lo = tPrev, hi = t;
@@ -46,9 +32,8 @@ vec4 volren_traverse(vec3 origin, vec3 dir, float tNear, float tFar, float jitte
                 }
                 tHit = hi;
             }
-            if (take) tPrev = t;
+            tPrev = t;
             if (t >= tFar) break;
-            i = next;
         }
     }
     if (tHit < 0.0) return vec4(0.0);
