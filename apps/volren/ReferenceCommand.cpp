@@ -12,8 +12,22 @@
 
 namespace volren::app {
 
-int referenceCommand(const std::vector<std::string>& args)
+int referenceCommand(const std::vector<std::string>& arguments)
 {
+    // --normals central|exact is the reference's own; the rest are render's options.
+    std::vector<std::string> args;
+    ReferenceOptions reference;
+    for (std::size_t i = 0; i < arguments.size(); ++i) {
+        if (arguments[i] != "--normals") {
+            args.push_back(arguments[i]);
+            continue;
+        }
+        if (i + 1 >= arguments.size()) throw UsageError("--normals needs a value");
+        const std::string& v = arguments[++i];
+        if (v == "exact") reference.gradient = ReferenceOptions::Gradient::Exact;
+        else if (v == "central") reference.gradient = ReferenceOptions::Gradient::CentralDifferences;
+        else throw UsageError("--normals: exact or central, got '" + v + "'");
+    }
     const RenderOptions options = parseRenderOptions(args, true);
     osg::ref_ptr<VolumeScene> scene = loadScene(options);
     osg::ref_ptr<osg::Camera> camera = new osg::Camera;  // the view `volren render` would use
@@ -24,7 +38,6 @@ int referenceCommand(const std::vector<std::string>& args)
     view.projection = camera->getProjectionMatrix();
     view.width = options.width;
     view.height = options.height;
-    ReferenceOptions reference;
     reference.background = options.background;
     const auto start = std::chrono::steady_clock::now();
     ReferenceSetup setup;

@@ -18,7 +18,7 @@ const char* const usage =
     "                [--fov DEG | --ortho HEIGHT] [--background r,g,b]\n"
     "                [--tf FILE.tf | --tf PRESETS.json[#NAME] [--tf-keep-range]]\n"
     "                [--set KEY=VALUE ...] [--frames N] [--samples N] [--stats FILE.json]\n"
-    "  volren reference INPUT -o OUT.exr [render's options]   CPU reference image (the integral)\n"
+    "  volren reference INPUT -o OUT.exr [render's options] [--normals central|exact]   CPU reference image\n"
     "  volren compare A B [--threshold T] [--diff OUT]   RMSE, PSNR, max error, pixels over T\n"
     "  volren info VOLUMEFILE          dims, type, spacing, value range, histogram\n"
     "  volren convert IN OUT [--encoding raw|gzip]   read any volume file, write e.g. OUT.nrrd\n"

@@ -36,16 +36,12 @@ float volren_opacityFromDepth(float tau)
 }
 
 // Unit normal from a gradient, facing the viewer (two-sided lighting). A zero, tiny, huge or
-// NaN gradient reuses the last good normal along the ray (the view direction at first).
-vec3 volren_lastNormal = vec3(0.0);
+// NaN gradient gives the view direction, as in the CPU reference: a sample's colour depends on
+// its position and the view only, never on the samples before it along the ray.
 vec3 volren_normalFromGradient(vec3 gradient, vec3 viewDir)
 {
     float scale = max(max(abs(gradient.x), abs(gradient.y)), abs(gradient.z));
-    if (scale > 1e-30 && !isinf(scale) && !isnan(scale)) {
-        vec3 n = -normalize(gradient / scale);  // normals point from dense to empty
-        volren_lastNormal = dot(n, viewDir) < 0.0 ? -n : n;
-    } else if (volren_lastNormal == vec3(0.0)) {
-        volren_lastNormal = viewDir;
-    }
-    return volren_lastNormal;
+    if (!(scale > 1e-30) || isinf(scale)) return viewDir;
+    vec3 n = -normalize(gradient / scale);  // normals point from dense to empty
+    return dot(n, viewDir) < 0.0 ? -n : n;
 }

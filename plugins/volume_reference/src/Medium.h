@@ -44,7 +44,7 @@ struct Medium
     double ambient = 0.0, specular = 0.0, shininess = 1.0, roughness = 1.0, shadingThreshold = 0.0;
     /// Lights in the node's local coordinates: position (w = 0: direction towards the light) and colour.
     std::vector<std::pair<glm::dvec4, glm::dvec3>> lights;
-    ReferenceOptions::Gradient gradientKind = ReferenceOptions::Gradient::Exact;
+    ReferenceOptions::Gradient gradientKind = ReferenceOptions::Gradient::CentralDifferences;
 
     /// Trilinear interpolation of the grid's central differences (per local unit) at `tc`.
     glm::dvec3 centralDifferences(const glm::dvec3& tc) const;

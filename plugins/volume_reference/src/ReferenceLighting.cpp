@@ -17,7 +17,9 @@ glm::dvec3 Medium::shade(const glm::dvec3& tc, const glm::dvec3& local, const gl
     if (gradientKind == ReferenceOptions::Gradient::CentralDifferences) gradient = centralDifferences(tc);
     else value(tc, &gradient);
     const double scale = std::max({std::abs(gradient.x), std::abs(gradient.y), std::abs(gradient.z)});
-    glm::dvec3 normal = scale > 0.0 && std::isfinite(scale) ? -glm::normalize(gradient / scale) : view;
+    // A gradient too small for a direction (as the GPU's volren_normalFromGradient: largest
+    // component <= 1e-30), infinite or NaN: the view direction.
+    glm::dvec3 normal = scale > 1e-30 && std::isfinite(scale) ? -glm::normalize(gradient / scale) : view;
     if (glm::dot(normal, view) < 0.0) normal = -normal;  // two-sided: normals face the viewer
     glm::dvec3 colour = ambient * albedo;
     for (const auto& [position, lightColour] : lights) {

@@ -29,14 +29,19 @@ ReferenceImage renderReference(const ReferenceScene& scene, const ReferenceCamer
     const bool withGeometry = !options.geometryDepth.empty();
     if (withGeometry && (options.geometryDepth.size() != pixels || options.geometryColour.size() != pixels * 4))
         throw std::invalid_argument("reference: geometry depth and colour must have one value (four) per pixel");
-    std::atomic<int> nextRow{0};
+    // Work is handed out in runs of a few pixels, not rows: a lit ray through noise may need
+    // thousands of times the steps of its neighbours, so rows left one thread working alone at
+    // the end; with small runs every thread works until the last few pixels.
+    constexpr std::size_t run = 8;
+    std::atomic<std::size_t> nextPixel{0};
     std::atomic<std::size_t> unconverged{0};
     double finest = std::numeric_limits<double>::infinity();
     std::mutex finestMutex;
     auto work = [&] {
         double localFinest = std::numeric_limits<double>::infinity();
-        for (int y; (y = nextRow++) < camera.height;) {
-            for (int x = 0; x < camera.width; ++x) {
+        for (std::size_t first; (first = nextPixel.fetch_add(run)) < pixels;) {
+            for (std::size_t pixel = first; pixel < std::min(first + run, pixels); ++pixel) {
+                const int x = int(pixel % std::size_t(camera.width)), y = int(pixel / std::size_t(camera.width));
                 const double nx = 2.0 * (x + 0.5) / camera.width - 1.0, ny = 2.0 * (y + 0.5) / camera.height - 1.0;
                 const osg::Vec3d nearPoint = osg::Vec3d(nx, ny, -1.0) * clipToWorld;
                 const osg::Vec3d farPoint = osg::Vec3d(nx, ny, 1.0) * clipToWorld;
@@ -44,7 +49,6 @@ ReferenceImage renderReference(const ReferenceScene& scene, const ReferenceCamer
                 ray.origin = toGlm(nearPoint);
                 ray.direction = toGlm(farPoint - nearPoint);
                 ray.length = glm::length(ray.direction);
-                const std::size_t pixel = std::size_t(y) * camera.width + x;
                 // Opaque geometry ends the ray at its depth and lies behind the volumes.
                 double end = 1.0;
                 glm::dvec4 behind(toGlm(options.background), 0.0);

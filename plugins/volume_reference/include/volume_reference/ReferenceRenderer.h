@@ -34,10 +34,12 @@ struct ReferenceOptions
     /// Shade with the scene's lights (off: emission is the TF colour, as VolumeScene's
     /// `lighting=off`). Like the renderer, the first 8 lights count.
     bool lighting = true;
-    /// The normals of lit samples: the exact gradient of the trilinear field (the truth; it
-    /// jumps across voxel faces), or the trilinear interpolation of the grid's central
-    /// differences (clamped at the edges), the usual smooth convention.
-    enum class Gradient { Exact, CentralDifferences } gradient = Gradient::Exact;
+    /// The normals of lit samples: central differences of the trilinear field over one voxel
+    /// each way (= the trilinear interpolation of the grid's central differences, clamped at the
+    /// edges; the GPU's default Gradient `central`, so lit images are compared in one
+    /// convention), or the exact gradient of the trilinear field (it jumps across voxel faces;
+    /// on noisy data its normals differ from any smooth estimate at every surface).
+    enum class Gradient { Exact, CentralDifferences } gradient = Gradient::CentralDifferences;
 };
 
 /// The result: RGBA in double precision, row 0 at the bottom, colour premultiplied and composited
