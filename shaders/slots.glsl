@@ -31,13 +31,17 @@ vec3 volren_shade(vec3 pos, vec3 viewDir, vec4 classified);
 // ClipPosition (template over clip shapes): true where the sample at pos is clipped away.
 bool volren_clipPosition(vec3 pos);
 
-// Acceleration: empty-space skipping. A ray parameter t' >= t such that no sample in [t, t')
-// may be visible (t itself when the sample at t may be; >= tFar when none before tFar may be).
+// Acceleration: empty-space skipping and adaptive steps. Skipping: a ray parameter t' >= t such
+// that no sample in [t, t') may be visible (t itself when the sample at t may be; >= tFar when
+// none before tFar may be).
 // The answer for t holds for samples up to tRecheck, so traversals ask again only past it.
 float volren_skip(vec3 origin, vec3 dir, float t, float tFar, out float tRecheck);
 // The same for MIP (above = true) and MinIP: no sample in [t, t') can pass level (be > level;
 // for MinIP < level), the ray's running maximum (minimum).
 float volren_skip(vec3 origin, vec3 dir, float t, float tFar, float level, bool above, out float tRecheck);
+// Adaptive sampling: how many of the march's steps from the sample at t on one sample may stand
+// for, as long as they end by tEnd (1: every step is sampled; the answer holds up to tEnd).
+int volren_stepsPerSample(vec3 origin, vec3 dir, float t, out float tEnd);
 
 // Jitter: offset of the first sample as a fraction of one step, in [0,1).
 float volren_jitter(vec2 fragCoord);

@@ -38,7 +38,9 @@ const std::vector<std::pair<std::string, double RenderSettings::*>>& exactNumber
         {"specular", &RenderSettings::specular},
         {"shininess", &RenderSettings::shininess},
         {"roughness", &RenderSettings::roughness},
-        {"threshold", &RenderSettings::threshold}};
+        {"threshold", &RenderSettings::threshold},
+        {"adaptiveTolerance", &RenderSettings::adaptiveTolerance},
+        {"lod", &RenderSettings::lod}};
     return fields;
 }
 

@@ -1,6 +1,8 @@
-// Acceleration/null: no empty-space skipping; every step is sampled (asked once per ray).
+// Acceleration/null: no empty-space skipping and no adaptive steps; every step is sampled
+// (asked once per ray).
 // float volren_skip(vec3 origin, vec3 dir, float t, float tFar, out float tRecheck)
 // float volren_skip(vec3 origin, vec3 dir, float t, float tFar, float level, bool above, out float tRecheck)
+// int volren_stepsPerSample(vec3 origin, vec3 dir, float t, out float tEnd)
 float volren_skip(vec3 origin, vec3 dir, float t, float tFar, out float tRecheck)
 {
     tRecheck = 1e30;
@@ -11,4 +13,10 @@ float volren_skip(vec3 origin, vec3 dir, float t, float tFar, float level, bool 
 {
     tRecheck = 1e30;
     return t;
+}
+
+int volren_stepsPerSample(vec3 origin, vec3 dir, float t, out float tEnd)
+{
+    tEnd = 1e30;
+    return 1;
 }

@@ -6,21 +6,25 @@
 // running maximum; else the running minimum) is left at its exit, one cell per pass of the
 // traversal's own loop: the extremum, and so the image, is the one without skipping.
 // float volren_skip(vec3 origin, vec3 dir, float t, float tFar, float level, bool above, out float tRecheck)
+// int volren_stepsPerSample(vec3 origin, vec3 dir, float t, out float tEnd)
 float volren_skip(vec3 origin, vec3 dir, float t, float tFar, float level, bool above, out float tRecheck)
 {
     ivec3 count = ivec3(volren_cellCount);
-    ivec3 cell = clamp(ivec3(floor((origin + dir * t) * volren_cellScale)), ivec3(0), count - 1);
+    ivec3 cell = volren_cellAt(origin, dir, t);
     int factor = int(volren_coarseFactor);
     ivec3 coarse = cell / factor;
     vec2 coarseRange = texelFetch(volren_cellRanges, ivec3(count.x + coarse.x, coarse.y, coarse.z), 0).rg;
     bool coarseDone = above ? coarseRange.y <= level : coarseRange.x >= level;
     vec2 range = texelFetch(volren_cellRanges, cell, 0).rg;
     bool done = coarseDone || (above ? range.y <= level : range.x >= level);
-    // Where the ray leaves the (coarse) cell: the nearest of the three planes it moves towards.
-    float size = coarseDone ? float(factor) : 1.0;
-    vec3 lower = coarseDone ? vec3(coarse * factor) : vec3(cell);
-    vec3 planes = (lower + step(vec3(0.0), dir) * size) / volren_cellScale;
-    vec3 tPlanes = mix(vec3(1e30), (planes - origin) / dir, notEqual(dir, vec3(0.0)));
-    tRecheck = max(t, min(tPlanes.x, min(tPlanes.y, tPlanes.z)));
+    tRecheck = coarseDone ? volren_cellExit(origin, dir, t, vec3(coarse * factor), float(factor))
+                          : volren_cellExit(origin, dir, t, vec3(cell), 1.0);
     return done ? tRecheck : t;
+}
+
+// MIP and MinIP take every step they sample (no adaptive steps).
+int volren_stepsPerSample(vec3 origin, vec3 dir, float t, out float tEnd)
+{
+    tEnd = 1e30;
+    return 1;
 }

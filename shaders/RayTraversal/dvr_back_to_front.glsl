@@ -1,6 +1,7 @@
 // RayTraversal/dvr_back_to_front: the same segments and samples as front-to-back, composited
 // from the far end (colour = c_i * a_i + (1 - a_i) * colour); no early termination possible.
-// The Acceleration leaps (along the reversed ray) over samples it proves transparent.
+// The Acceleration leaps (along the reversed ray) over samples it proves transparent and may
+// let one sample stand for a run of steps (adaptive).
 // vec4 volren_traverse(vec3 origin, vec3 dir, float tNear, float tFar, float jitter, out float tHit)
 vec4 volren_traverse(vec3 origin, vec3 dir, float tNear, float tFar, float jitter, out float tHit)
 {
@@ -13,6 +14,8 @@ vec4 volren_traverse(vec3 origin, vec3 dir, float tNear, float tFar, float jitte
     precise float compensation = 0.0;
     vec3 color = vec3(0.0);
     float tRecheck = 1e30;  // skipping runs along the reversed ray, parameter -t
+    float tRunStart = 1e30;  // adaptive steps too: where their answer must be asked again
+    int steps = 1;
     for (int i = m.count - 1; i >= 0;) {
         int next = i - 1;
         float segStart = volren_segmentStart(m, i, tNear, tFar);
@@ -27,6 +30,20 @@ vec4 volren_traverse(vec3 origin, vec3 dir, float tNear, float tFar, float jitte
             int at = volren_leapBack(m, i, tMid, tNext, tNear);
             visible = at == i;
             next = visible ? next : at;
+        }
+        if (visible) {  // adaptive sampling: one sample for a run of steps where the medium is homogeneous
+            if (tMid <= tRunStart) {
+                float reversedEnd;
+                steps = volren_stepsPerSample(origin, -dir, -tMid, reversedEnd);
+                tRunStart = -reversedEnd;
+            }
+            int first = max(max(i - steps, -1) + 1, volren_segmentStartingFrom(m, tRunStart));
+            if (first < i) {
+                segStart = volren_segmentStart(m, first, tNear, tFar);
+                lenT = segEnd - segStart;
+                tMid = 0.5 * (segStart + segEnd);
+                next = first - 1;
+            }
         }
         vec3 p = origin + dir * tMid;
         if (visible && !volren_clipPosition(p)) {

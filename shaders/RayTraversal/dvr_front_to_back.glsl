@@ -1,6 +1,6 @@
 // RayTraversal/dvr_front_to_back: emission-absorption compositing, front to back, with early
 // termination once the accumulated opacity reaches the threshold; the Acceleration leaps over
-// samples it proves transparent.
+// samples it proves transparent and may let one sample stand for a run of steps (adaptive).
 // vec4 volren_traverse(vec3 origin, vec3 dir, float tNear, float tFar, float jitter, out float tHit)
 // Segments (march.glsl) tile [tNear, tFar] exactly and are sampled at their midpoints, so a
 // homogeneous medium gives exp(-sigma*L) at any step.
@@ -16,6 +16,8 @@ vec4 volren_traverse(vec3 origin, vec3 dir, float tNear, float tFar, float jitte
     precise float compensation = 0.0;
     vec3 color = vec3(0.0);
     float tRecheck = -1e30;
+    float tRunEnd = -1e30;  // where the Acceleration's answer on adaptive steps must be asked again
+    int steps = 1;
     for (int i = 0; i < m.count;) {
         int next = i + 1;
         float segStart = volren_segmentStart(m, i, tNear, tFar);
@@ -27,6 +29,16 @@ vec4 volren_traverse(vec3 origin, vec3 dir, float tNear, float tFar, float jitte
             int at = volren_leap(m, i, tMid, volren_skip(origin, dir, tMid, tFar, tRecheck), tFar);
             visible = at == i;
             next = visible ? next : at;
+        }
+        if (visible) {  // adaptive sampling: one sample for a run of steps where the medium is homogeneous
+            if (tMid >= tRunEnd) steps = volren_stepsPerSample(origin, dir, tMid, tRunEnd);
+            int last = min(min(i + steps, m.count) - 1, volren_segmentEndingBy(m, tRunEnd));
+            if (last > i) {
+                segEnd = volren_segmentEnd(m, last, tFar);
+                lenT = segEnd - segStart;
+                tMid = 0.5 * (segStart + segEnd);
+                next = last + 1;
+            }
         }
         vec3 p = origin + dir * tMid;
         if (visible && !volren_clipPosition(p)) {

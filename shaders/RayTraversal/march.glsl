@@ -42,6 +42,17 @@ int volren_segmentUpTo(VolrenMarch m, float t)
     return int(clamp(floor((t - m.firstEnd) / m.stepT + 0.5), -1.0, float(m.count)));
 }
 
+// Adaptive steps' runs: the last segment that ends at or before t, and the first that starts at
+// or after it (clamped to [-1, count - 1] and [0, count]).
+int volren_segmentEndingBy(VolrenMarch m, float t)
+{
+    return int(clamp(floor((t - m.firstEnd) / m.stepT), -1.0, float(m.count - 1)));
+}
+int volren_segmentStartingFrom(VolrenMarch m, float t)
+{
+    return int(clamp(ceil((t - m.firstEnd) / m.stepT) + 1.0, 0.0, float(m.count)));
+}
+
 // Where a march goes on after volren_skip answered tNext for the sample of segment i at tMid:
 // i itself when that sample may show, else the first segment at or past tNext (count, or -1
 // marching backwards, when nothing before the ray's end may show).

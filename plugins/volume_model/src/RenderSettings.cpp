@@ -70,6 +70,8 @@ bool RenderSettings::operator==(const RenderSettings& o) const
            same(shadingThreshold, o.shadingThreshold) && same(ambient, o.ambient) && same(specular, o.specular) &&
            same(shininess, o.shininess) && same(roughness, o.roughness) && same(threshold, o.threshold) &&
            debugView == o.debugView && macrocellSize == o.macrocellSize &&
+           same(adaptiveTolerance, o.adaptiveTolerance) && adaptiveSteps == o.adaptiveSteps && same(lod, o.lod) &&
+           lodByDistance == o.lodByDistance &&
            functions == o.functions && forceNull == o.forceNull;
 }
 
@@ -89,6 +91,10 @@ std::vector<std::pair<std::string, std::string>> RenderSettings::keys()
         {"sampleDistance", "step in world units (0 = use sampleFactor)"},
         {"earlyTermination", "opacity at which front-to-back marching stops (1 = never; default 1 - 1/512)"},
         {"macrocellSize", "edge of the empty-space-skipping macrocells in voxels (1-1024)"},
+        {"adaptiveTolerance", "adaptive sampling: largest change of the classified RGBA in a homogeneous macrocell (0-1)"},
+        {"adaptiveSteps", "adaptive sampling: most march steps one sample stands for in a homogeneous macrocell (1-64)"},
+        {"lod", "level of detail: mip level the volume is sampled from, the step growing as 2^lod (0-16)"},
+        {"lodByDistance", "level of detail by distance: the level rises where a pixel covers more than a voxel (on/off)"},
         {"isoValue", "isosurface data value (empty = the TF's first opaque value)"},
         {"shadingThreshold", "opacity below which lighting_threshold shading leaves samples unlit"},
         {"ambient", "ambient light fraction"},
@@ -115,6 +121,10 @@ std::string RenderSettings::get(const std::string& key) const
     if (k == "sampledistance") return number(sampleDistance);
     if (k == "earlytermination") return number(earlyTerminationThreshold);
     if (k == "macrocellsize") return std::to_string(macrocellSize);
+    if (k == "adaptivetolerance") return number(adaptiveTolerance);
+    if (k == "adaptivesteps") return std::to_string(adaptiveSteps);
+    if (k == "lod") return number(lod);
+    if (k == "lodbydistance") return lodByDistance ? "on" : "off";
     if (k == "isovalue") return std::isnan(isoValue) ? std::string() : number(isoValue);
     if (k == "shadingthreshold") return number(shadingThreshold);
     if (k == "ambient") return number(ambient);
@@ -171,6 +181,8 @@ bool RenderSettings::set(const std::string& key, const std::string& value, std::
         {"shininess", &shininess, 1.0, 1e4, false},
         {"roughness", &roughness, 0.0, 1.0, true},
         {"threshold", &threshold, 0.0, 1.0, false},
+        {"adaptivetolerance", &adaptiveTolerance, 0.0, 1.0, false},
+        {"lod", &lod, 0.0, 16.0, false},
     };
     double v = 0.0;
     if (k == "samplerate") {
@@ -192,6 +204,18 @@ bool RenderSettings::set(const std::string& key, const std::string& value, std::
             return error = "macrocellSize must be a whole number of voxels in [1, 1024], got '" + value + "'", false;
         macrocellSize = int(v);
         return true;
+    }
+    if (k == "adaptivesteps") {
+        if (!parseFiniteNumber(value, v) || v != std::floor(v) || v < 1.0 || v > 64.0)
+            return error = "adaptiveSteps must be a whole number of steps in [1, 64], got '" + value + "'", false;
+        adaptiveSteps = int(v);
+        return true;
+    }
+    if (k == "lodbydistance") {
+        const std::string b = lower(value);
+        if (b == "on" || b == "true" || b == "1") return lodByDistance = true, true;
+        if (b == "off" || b == "false" || b == "0") return lodByDistance = false, true;
+        return error = "lodByDistance must be on or off, got '" + value + "'", false;
     }
     if (k == "isovalue") {
         if (value.empty()) return isoValue = std::numeric_limits<double>::quiet_NaN(), true;

@@ -23,6 +23,18 @@ struct RenderSettings
     double earlyTerminationThreshold = 1.0 - 1.0 / 512.0;
     /// Edge of the empty-space-skipping macrocells, in voxels (Acceleration occupancy).
     int macrocellSize = 8;
+    /// Adaptive sampling (Acceleration adaptive): a macrocell whose classified RGBA (opacity and
+    /// opacity-weighted colour) varies by at most this over its values is homogeneous, and one
+    /// sample stands for up to adaptiveSteps steps of the march inside it.
+    double adaptiveTolerance = 1.0 / 256.0;
+    /// Most steps of the march one sample stands for in a homogeneous macrocell (1 = none).
+    int adaptiveSteps = 4;
+    /// Level of detail: the volume is sampled from this level of its mip chain (0 = full
+    /// resolution; fractions blend two levels) with a step 2^lod times as long.
+    double lod = 0.0;
+    /// Level of detail by distance: the level rises (on top of lod) by log2 of how many voxels
+    /// a pixel covers where the volume is nearest the camera, so far volumes sample coarser.
+    bool lodByDistance = false;
     /// Data value of the isosurface (isosurface traversal); NaN = the TF's first opaque value.
     double isoValue = std::numeric_limits<double>::quiet_NaN();
     /// Samples below this classified opacity are not lit (lighting_threshold shading).

@@ -26,7 +26,10 @@ struct RenderSettings;
 /// - OccupancyGrid: per macrocell of the volume, whether any sample in it may be visible under
 ///   the current transfer function (MacrocellGrid.h), as an R8 3D texture read with texelFetch;
 /// - MacrocellRanges: per macrocell the smallest and largest texel value its samples can read,
-///   as an RG16F 3D texture (bounds rounded outwards) read with texelFetch (MacrocellGrid.h).
+///   as an RG16F 3D texture (bounds rounded outwards) read with texelFetch (MacrocellGrid.h);
+/// - HomogeneityGrid: the OccupancyGrid with visible cells told apart: 255 where the
+///   classification varies by at most the node's adaptiveTolerance over the cell's values
+///   (Classification's `variation` mirror), else 128 (adaptive sampling).
 enum class AuxData
 {
     VolumeTexture,
@@ -36,7 +39,8 @@ enum class AuxData
     DepthTexture,
     EntryPoints,
     OccupancyGrid,
-    MacrocellRanges
+    MacrocellRanges,
+    HomogeneityGrid
 };
 
 /// A light as the volume sees it, in the VolumeNode's local coordinates.

@@ -38,8 +38,13 @@ double texelValue(const Volume& volume, std::size_t i);
 /// Throws std::invalid_argument for a cell size below 1 or a negative apron.
 MacrocellGrid buildMacrocellGrid(const Volume& volume, int cellSize, int apron);
 
-/// Per cell 255 where `mayShow(lo, hi)` holds (a sample there may be visible), else 0.
-std::vector<std::uint8_t> occupancyOf(const MacrocellGrid& grid, const std::function<bool(double, double)>& mayShow);
+/// Per cell 255 where `mayShow(lo, hi)` holds (a sample there may be visible), else 0. With
+/// `homogeneous` (adaptive sampling), visible cells are 255 where it holds too, else 128.
+std::vector<std::uint8_t> occupancyOf(const MacrocellGrid& grid, const std::function<bool(double, double)>& mayShow,
+                                      const std::function<bool(double, double)>& homogeneous = {});
+
+/// Occupancy texel of a visible cell in which the classification varies (adaptive sampling).
+constexpr std::uint8_t occupiedVarying = 128;
 
 /// Cells per coarse cell along each axis in the occupancy texture's second level.
 constexpr int occupancyCoarseFactor = 4;

@@ -71,6 +71,9 @@ struct ImplementationTraits
     /// running maximum or minimum (MIP, MinIP; the volren_skip overload with a level). Both need
     /// a Reconstruction with a footprint. Empty: none (an Acceleration with none leaps nowhere).
     std::string skips = {};
+    /// Acceleration: it changes the image, within a bound it states (adaptive steps), so the
+    /// policy never chooses it unless asked; skipping alone is exact.
+    bool approximates = false;
     /// Other names users may give it in settings ("dvr" for dvr_front_to_back).
     std::vector<std::string> aliases = {};
 };
@@ -96,6 +99,11 @@ struct ShaderFunction
     /// predicate false only when every texel value in [lo, hi] classifies to zero opacity (used
     /// for empty-space skipping while that binding lasts). Unset: unknown, nothing is skipped.
     std::function<std::function<bool(double lo, double hi)>(const BindContext&)> mayShow = {};
+    /// Classification: makes, for a binding, the CPU mirror of how much its classification may
+    /// change over texel values [lo, hi]: a bound on the difference of the opacity, and of each
+    /// opacity-weighted colour component, between any two values there (adaptive sampling's
+    /// homogeneity). Unset: unknown, no region is homogeneous.
+    std::function<std::function<double(double lo, double hi)>(const BindContext&)> variation = {};
 
     /// Whether this implementation may call `slot` (true when its calls are unknown).
     bool mayCall(const std::string& slot) const

@@ -30,6 +30,7 @@ ShaderFunction gridSkipping(const std::string& name, const std::string& sampler,
 {
     return {.slot = "Acceleration",
             .name = name,
+            .includes = {"Acceleration/cells.glsl"},
             .uniforms = cellUniforms,
             .textures = {{sampler, "sampler3D"}},
             .needs = {aux},
@@ -49,8 +50,24 @@ void registerAccelerationFunctions(ShaderFunctionRegistry& registry)
 
     // The pass builds the grids from the volume's macrocell value ranges with the
     // Reconstruction's footprint as apron (and, for opacity, the Classification's CPU mirror).
-    registry.add(gridSkipping("occupancy", "volren_occupancy", AuxData::OccupancyGrid, "opacity"));
+    ShaderFunction occupancy = gridSkipping("occupancy", "volren_occupancy", AuxData::OccupancyGrid, "opacity");
+    occupancy.includes.push_back("Acceleration/occupancy_leap.glsl");
+    registry.add(occupancy);
     registry.add(gridSkipping("range", "volren_cellRanges", AuxData::MacrocellRanges, "extremum"));
+
+    // Skipping as occupancy, and in cells where the classification stays within the node's
+    // adaptiveTolerance (the Classification's variation mirror) one sample for up to
+    // adaptiveSteps steps.
+    ShaderFunction adaptive = gridSkipping("adaptive", "volren_occupancy", AuxData::HomogeneityGrid, "opacity");
+    adaptive.includes.push_back("Acceleration/occupancy_leap.glsl");
+    adaptive.uniforms.push_back({"volren_adaptiveSteps", "int", ""});
+    adaptive.traits.approximates = true;
+    adaptive.bind = [](BindContext& c) {
+        bindCells(c);
+        c.texture("volren_occupancy", c.aux.at(AuxData::HomogeneityGrid).get());
+        c.uniform("volren_adaptiveSteps", c.settings.adaptiveSteps);
+    };
+    registry.add(adaptive);
 }
 
 }  // namespace volren

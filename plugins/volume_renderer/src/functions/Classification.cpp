@@ -23,6 +23,19 @@ double largestWindowed(const BindContext& c, double lo, double hi)
     return std::max(lo * scale + offset, hi * scale + offset);
 }
 
+/// The table entries linear filtering may mix for window values in [u0, u1] (clamped), with one
+/// more on each side for float rounding; false when the range is NaN (no bound).
+bool entriesOf(double u0, double u1, double last, int& a, int& b)
+{
+    if (std::isnan(u0) || std::isnan(u1)) return false;
+    if (u0 > u1) std::swap(u0, u1);
+    u0 = std::clamp(u0, 0.0, 1.0);
+    u1 = std::clamp(u1, 0.0, 1.0);
+    a = std::max(0, int(std::floor(u0 * last)) - 1);
+    b = std::min(int(last), int(std::ceil(u1 * last)) + 1);
+    return true;
+}
+
 /// CPU mirror of the GLSL's table lookup: some entry that linear filtering may mix for a
 /// window value in the range has opacity.
 std::function<bool(double, double)> tableMirror(const BindContext& c)
@@ -33,15 +46,58 @@ std::function<bool(double, double)> tableMirror(const BindContext& c)
     for (std::size_t i = 0; i < table.size(); ++i) opaqueBefore[i + 1] = opaqueBefore[i] + (table[i].a() > 0.0f ? 1 : 0);
     const double last = double(table.size()) - 1.0;
     return [scale, offset, opaqueBefore = std::move(opaqueBefore), last](double lo, double hi) {
-        double u0 = lo * scale + offset, u1 = hi * scale + offset;
-        if (std::isnan(u0) || std::isnan(u1)) return true;
-        if (u0 > u1) std::swap(u0, u1);
-        u0 = std::clamp(u0, 0.0, 1.0);
-        u1 = std::clamp(u1, 0.0, 1.0);
-        // The two entries around u * last, and one more on each side for float rounding.
-        const int a = std::max(0, int(std::floor(u0 * last)) - 1);
-        const int b = std::min(int(last), int(std::ceil(u1 * last)) + 1);
+        int a = 0, b = 0;
+        if (!entriesOf(lo * scale + offset, hi * scale + offset, last, a, b)) return true;
         return opaqueBefore[std::size_t(b) + 1] > opaqueBefore[std::size_t(a)];
+    };
+}
+
+/// CPU mirror of the table lookup's variation: over the entries [a, b] a window range may mix,
+/// the opacity varies by at most max a - min a and an opacity-weighted colour component (the
+/// product of two interpolants for tf1d, the interpolated product for premultiplied) by at most
+/// max a * max c - min a * min c. Range minima and maxima come from sparse tables (O(1) a cell).
+std::function<double(double, double)> tableVariation(const BindContext& c)
+{
+    const auto [scale, offset] = bindings::windowMap(c);
+    const std::vector<osg::Vec4> table = c.transfer.lookupTable();
+    const std::size_t n = table.size();
+    // levels[k][i]: min and max of each component over entries [i, i + 2^k).
+    struct Span
+    {
+        osg::Vec4 lo, hi;
+    };
+    std::vector<std::vector<Span>> levels(1);
+    for (const osg::Vec4& e : table) levels[0].push_back({e, e});
+    for (std::size_t k = 1; (std::size_t(1) << k) <= n; ++k) {
+        const std::vector<Span>& prev = levels[k - 1];
+        std::vector<Span> next(n - (std::size_t(1) << k) + 1);
+        for (std::size_t i = 0; i < next.size(); ++i) {
+            const Span& x = prev[i];
+            const Span& y = prev[i + (std::size_t(1) << (k - 1))];
+            for (int j = 0; j < 4; ++j) {
+                next[i].lo[j] = std::min(x.lo[j], y.lo[j]);
+                next[i].hi[j] = std::max(x.hi[j], y.hi[j]);
+            }
+        }
+        levels.push_back(std::move(next));
+    }
+    const double last = double(n) - 1.0;
+    return [scale, offset, levels = std::move(levels), last](double lo, double hi) {
+        int a = 0, b = 0;
+        if (!entriesOf(lo * scale + offset, hi * scale + offset, last, a, b)) return 1.0;
+        const std::size_t count = std::size_t(b - a + 1);
+        std::size_t k = 0;
+        while ((std::size_t(2) << k) <= count) ++k;
+        const auto& x = levels[k][std::size_t(a)];
+        const auto& y = levels[k][std::size_t(b) + 1 - (std::size_t(1) << k)];
+        osg::Vec4 mn, mx;
+        for (int j = 0; j < 4; ++j) {
+            mn[j] = std::min(x.lo[j], y.lo[j]);
+            mx[j] = std::max(x.hi[j], y.hi[j]);
+        }
+        double v = double(mx.a()) - mn.a();
+        for (int j = 0; j < 3; ++j) v = std::max(v, double(mx.a()) * mx[j] - double(mn.a()) * mn[j]);
+        return v;
     };
 }
 
@@ -60,6 +116,17 @@ void registerClassificationFunctions(ShaderFunctionRegistry& registry)
                           const double u = largestWindowed(c, lo, hi);
                           return std::isnan(u) || u > -1e-6;
                       };
+                  },
+                  .variation = [](const BindContext& c) -> std::function<double(double, double)> {
+                      const auto [scale, offset] = bindings::windowMap(c);
+                      return [scale, offset](double lo, double hi) {  // opacity u, colour u: u^2 weighted
+                          double u0 = lo * scale + offset, u1 = hi * scale + offset;
+                          if (std::isnan(u0) || std::isnan(u1)) return 1.0;
+                          if (u0 > u1) std::swap(u0, u1);
+                          u0 = std::clamp(u0, 0.0, 1.0);
+                          u1 = std::clamp(u1, 0.0, 1.0);
+                          return std::max(u1 - u0, u1 * u1 - u0 * u0) + 1e-6;
+                      };
                   }});
 
     registry.add({.slot = "Classification",
@@ -73,7 +140,8 @@ void registerClassificationFunctions(ShaderFunctionRegistry& registry)
                           c.texture("volren_transferFunction", c.aux.at(AuxData::TransferFunctionTable).get());
                       },
                   .traits = leaf,
-                  .mayShow = tableMirror});
+                  .mayShow = tableMirror,
+                  .variation = tableVariation});
 
     registry.add({.slot = "Classification",
                   .name = "premultiplied",
@@ -86,7 +154,8 @@ void registerClassificationFunctions(ShaderFunctionRegistry& registry)
                           c.texture("volren_premultipliedTable", c.aux.at(AuxData::PremultipliedTable).get());
                       },
                   .traits = leaf,
-                  .mayShow = tableMirror});  // the same opacities as tf1d
+                  .mayShow = tableMirror,  // the same opacities as tf1d
+                  .variation = tableVariation});
 
     registry.add({.slot = "Classification",
                   .name = "threshold",

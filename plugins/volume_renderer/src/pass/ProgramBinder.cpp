@@ -30,9 +30,12 @@ int footprintOf(const std::vector<const Binding*>& bindings)
     throw std::logic_error("macrocell grid without a Reconstruction footprint");  // the policy's rules exclude this
 }
 
-/// The occupancy grid of the bound volume under the bound Classification's opacity mirror.
+/// The occupancy grid of the bound volume under the bound Classification's opacity mirror; with
+/// `homogeneity`, visible cells tell whether the classification varies within adaptiveTolerance
+/// there (none is homogeneous for a Classification without a variation mirror or a volume with
+/// NaN voxels, whose interpolated samples turn transparent).
 osg::Texture* occupancyFor(const BindContext& context, const std::vector<const Binding*>& bindings,
-                           TextureCache& textures, unsigned int cull)
+                           TextureCache& textures, unsigned int cull, bool homogeneity)
 {
     const ShaderFunction* classification = nullptr;
     for (const Binding* b : bindings)
@@ -41,11 +44,28 @@ osg::Texture* occupancyFor(const BindContext& context, const std::vector<const B
     if (!classification || !classification->mayShow)  // the policy's rules exclude this
         throw std::logic_error("occupancy grid without a Classification mirror");
     // What the classification's opacity depends on besides the volume and the TF.
-    char threshold[32];
-    std::snprintf(threshold, sizeof(threshold), "%a", context.settings.threshold);  // exact
-    const std::string key = classification->name + " " + threshold;
-    return textures.occupancy(context.volume, context.transfer, context.settings.macrocellSize, footprint, key,
-                              [&] { return classification->mayShow(context); }, cull);
+    char key[96];
+    std::snprintf(key, sizeof(key), " %a", context.settings.threshold);  // exact
+    std::string fullKey = classification->name + key;
+    const bool varies = homogeneity && classification->variation && context.volume.nonFiniteCount() == 0;
+    if (homogeneity) {
+        std::snprintf(key, sizeof(key), " homogeneous within %a", varies ? context.settings.adaptiveTolerance : -1.0);
+        fullKey += key;
+    }
+    return textures.occupancy(
+        context.volume, context.transfer, context.settings.macrocellSize, footprint, fullKey,
+        [&]() -> std::pair<TextureCache::CellTest, TextureCache::CellTest> {
+            TextureCache::CellTest homogeneous;
+            if (varies)
+                homogeneous = [variation = classification->variation(context),
+                               tolerance = context.settings.adaptiveTolerance](double lo, double hi) {
+                    return variation(lo, hi) <= tolerance;
+                };
+            else if (homogeneity)
+                homogeneous = [](double, double) { return false; };
+            return {classification->mayShow(context), homogeneous};
+        },
+        cull);
 }
 
 }  // namespace
@@ -70,7 +90,10 @@ void bindProgram(BindContext& context, const ComposedProgram& program,
         context.aux[AuxData::PremultipliedTable] = textures.table(context.transfer, true, cull);
     for (const Binding* b : mine)
         if (b->instance < 0) context.chosen[b->function->slot] = b->function->name;
-    if (needs(AuxData::OccupancyGrid)) context.aux[AuxData::OccupancyGrid] = occupancyFor(context, mine, textures, cull);
+    if (needs(AuxData::OccupancyGrid))
+        context.aux[AuxData::OccupancyGrid] = occupancyFor(context, mine, textures, cull, false);
+    if (needs(AuxData::HomogeneityGrid))
+        context.aux[AuxData::HomogeneityGrid] = occupancyFor(context, mine, textures, cull, true);
     if (needs(AuxData::MacrocellRanges))
         context.aux[AuxData::MacrocellRanges] =
             textures.ranges(context.volume, context.settings.macrocellSize, footprintOf(mine), cull);

@@ -76,7 +76,10 @@ std::string settingsHelp(const CompositionPolicy& policy)
         std::string leaps;  // implementations chosen by the traversal's leaps (Acceleration)
         for (const std::string& name : names)
             if (const ShaderFunction* f = policy.registry().find(s.name, name); f && !f->traits.skips.empty())
-                leaps += (leaps.empty() ? "" : ", ") + name + " where the traversal leaps by " + f->traits.skips;
+                leaps += (leaps.empty() ? "" : ", ") + name +
+                         (f->traits.approximates ? " (only when asked: approximates) leaps by "
+                                                 : " where the traversal leaps by ") +
+                         f->traits.skips;
         if (!leaps.empty()) out << "   [" << leaps << "]";
         out << (s.isTemplate ? "   [one instance per clip shape, chosen by the scene]" : "") << "\n";
     }

@@ -117,11 +117,15 @@ MacrocellGrid buildMacrocellGrid(const Volume& volume, int cellSize, int apron)
     return grid;
 }
 
-std::vector<std::uint8_t> occupancyOf(const MacrocellGrid& grid, const std::function<bool(double, double)>& mayShow)
+std::vector<std::uint8_t> occupancyOf(const MacrocellGrid& grid, const std::function<bool(double, double)>& mayShow,
+                                      const std::function<bool(double, double)>& homogeneous)
 {
     std::vector<std::uint8_t> out(grid.size(), 0);
-    for (std::size_t i = 0; i < grid.size(); ++i)
-        if (grid.lo[i] <= grid.hi[i] && mayShow(double(grid.lo[i]), double(grid.hi[i]))) out[i] = 255;
+    for (std::size_t i = 0; i < grid.size(); ++i) {
+        const double lo = grid.lo[i], hi = grid.hi[i];
+        if (!(lo <= hi) || !mayShow(lo, hi)) continue;
+        out[i] = !homogeneous || homogeneous(lo, hi) ? 255 : occupiedVarying;
+    }
     return out;
 }
 

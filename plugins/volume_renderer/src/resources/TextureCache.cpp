@@ -58,8 +58,7 @@ osg::Texture* TextureCache::table(const TransferFunction& transfer, bool premult
 }
 
 osg::Texture* TextureCache::occupancy(const Volume& volume, const TransferFunction& transfer, int cellSize, int apron,
-                                      const std::string& key,
-                                      const std::function<std::function<bool(double, double)>()>& visibility,
+                                      const std::string& key, const std::function<std::pair<CellTest, CellTest>()>& tests,
                                       unsigned int cull)
 {
     bool newRanges = false;
@@ -69,7 +68,8 @@ osg::Texture* TextureCache::occupancy(const Volume& volume, const TransferFuncti
         o.transferModified != transfer.modifiedCount()) {
         o.volume = &volume;
         o.transfer = &transfer;
-        o.texture = makeOccupancyTexture(ranges.grid, occupancyOf(ranges.grid, visibility()));
+        const auto [visible, homogeneous] = tests();
+        o.texture = makeOccupancyTexture(ranges.grid, occupancyOf(ranges.grid, visible, homogeneous));
         o.volumeModified = volume.modifiedCount();
         o.transferModified = transfer.modifiedCount();
         ++_occupancyBuilds;

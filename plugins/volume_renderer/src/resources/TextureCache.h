@@ -26,11 +26,14 @@ public:
     osg::Texture* volume(const Volume& volume, bool nearest, unsigned int cull);
     /// The 1D table of `transfer` (associated colours when `premultiplied`), used in cull `cull`.
     osg::Texture* table(const TransferFunction& transfer, bool premultiplied, unsigned int cull);
+    /// What decides a cell's occupancy texel under one classification (MacrocellGrid.h's occupancyOf).
+    using CellTest = std::function<bool(double lo, double hi)>;
     /// The occupancy texture of `volume` in macrocells of `cellSize` voxels with `apron` under the
-    /// predicate `visibility` makes, remade when the volume, `transfer` or `key` (the
-    /// classification and its settings) changes; the value-range grid is kept per volume.
+    /// predicates `tests` makes (visibility; and homogeneity, or none), remade when the volume,
+    /// `transfer` or `key` (the classification, its settings, the tolerance) changes; the
+    /// value-range grid is kept per volume.
     osg::Texture* occupancy(const Volume& volume, const TransferFunction& transfer, int cellSize, int apron,
-                            const std::string& key, const std::function<std::function<bool(double, double)>()>& visibility,
+                            const std::string& key, const std::function<std::pair<CellTest, CellTest>()>& tests,
                             unsigned int cull);
     /// The value-range texture of `volume` in macrocells of `cellSize` voxels with `apron`.
     osg::Texture* ranges(const Volume& volume, int cellSize, int apron, unsigned int cull);
