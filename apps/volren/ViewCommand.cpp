@@ -17,6 +17,7 @@
 #include <osgViewer/Viewer>
 #include <osgViewer/ViewerEventHandlers>
 
+#include <algorithm>
 #include <cstdlib>
 #include <iostream>
 
@@ -71,6 +72,12 @@ int viewCommand(const std::vector<std::string>& args)
         throw std::runtime_error("volren view needs a display and DISPLAY is not set; use 'volren render' for images");
 
     osg::ref_ptr<VolumeScene> root = loadScene(options);
+    // Interactive views sample far volumes coarser (and keep the mip chain the interaction
+    // quality's coarser level needs), unless --set says otherwise.
+    const bool lodSet = std::any_of(options.settings.begin(), options.settings.end(),
+                                    [](const auto& kv) { return kv.first == "lodByDistance"; });
+    if (!lodSet)
+        for (VolumeNode* n : findVolumeNodes(*root)) n->settings.lodByDistance = true;
     if (options.samples > 1) osg::DisplaySettings::instance()->setNumMultiSamples(options.samples);  // an MSAA window
     osgViewer::Viewer viewer;
     viewer.setThreadingModel(osgViewer::ViewerBase::SingleThreaded);
@@ -87,7 +94,7 @@ int viewCommand(const std::vector<std::string>& args)
         editor = std::make_unique<TransferFunctionEditor>(const_cast<TransferFunction*>(node->getTransferFunction()),
                                                           node->getVolume());
         std::map<std::string, std::vector<std::string>> choices;
-        for (const char* slot : {"RayTraversal", "Reconstruction", "Gradient", "Illumination"})
+        for (const char* slot : {"RayTraversal", "Reconstruction", "Gradient", "Illumination", "Acceleration"})
             choices[slot] = root->policy().choosable(slot);  // default first
         panel = std::make_unique<RenderSettingsPanel>(node, choices);
         overlay = new ImGuiOverlay([&editor, &panel] {

@@ -39,8 +39,7 @@ const std::vector<std::pair<std::string, double RenderSettings::*>>& exactNumber
         {"shininess", &RenderSettings::shininess},
         {"roughness", &RenderSettings::roughness},
         {"threshold", &RenderSettings::threshold},
-        {"adaptiveTolerance", &RenderSettings::adaptiveTolerance},
-        {"lod", &RenderSettings::lod}};
+        {"adaptiveTolerance", &RenderSettings::adaptiveTolerance}};
     return fields;
 }
 

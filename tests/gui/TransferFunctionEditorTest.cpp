@@ -291,28 +291,27 @@ TEST_F(Editor, WindowEventsReachImGuiAndThoseOnTheEditorAreConsumed)
     EXPECT_FALSE(handler.handle(*event(osgGA::GUIEventAdapter::PUSH, 1.3, width - 5.0f, 5.0f), actions));
 }
 
-TEST(InteractionQualityPolicy, HalfRateWhileInteractingFullRateWhenIdle)
+TEST(InteractionQualityPolicy, CoarserLevelOfDetailWhileInteractingFullLevelWhenIdle)
 {
     osg::ref_ptr<VolumeNode> node = RenderFixture::volumeNode(constantVolume(VoxelType::UInt8, {4, 4, 4}, 1).get(),
                                                               constantTransferFunction(osg::Vec4(1, 1, 1, 0.1f)).get());
-    node->settings.sampleDistanceFactor = 0.5;
     osg::ref_ptr<InteractionQuality> policy = new InteractionQuality(node.get(), 0.3);
     NoActions actions;
     EXPECT_FALSE(policy->handle(*event(osgGA::GUIEventAdapter::PUSH, 1.0), actions)) << "never consumes";
-    EXPECT_EQ(node->settings.sampleDistanceFactor, 1.0) << "half the samples while interacting";
+    EXPECT_EQ(node->settings.lod, 1) << "the next mip level while interacting";
     policy->handle(*event(osgGA::GUIEventAdapter::DRAG, 1.1), actions);
     policy->handle(*event(osgGA::GUIEventAdapter::FRAME, 1.3), actions);
-    EXPECT_EQ(node->settings.sampleDistanceFactor, 1.0) << "0.2 s after the last drag: still reduced";
+    EXPECT_EQ(node->settings.lod, 1) << "0.2 s after the last drag: still coarser";
     policy->handle(*event(osgGA::GUIEventAdapter::FRAME, 1.45), actions);
-    EXPECT_EQ(node->settings.sampleDistanceFactor, 0.5) << "0.35 s after: the full rate";
+    EXPECT_EQ(node->settings.lod, 0) << "0.35 s after: the full level";
     EXPECT_FALSE(policy->lowered());
 
-    node->settings.sampleDistanceFactor = 1.5;  // coarse already: at most 2 voxels per step
+    node->settings.lod = 2;  // coarse already: one more
     policy->handle(*event(osgGA::GUIEventAdapter::SCROLL, 2.0), actions);
-    EXPECT_EQ(node->settings.sampleDistanceFactor, 2.0);
-    node->settings.sampleDistanceFactor = 0.25;  // the settings panel during the drag
+    EXPECT_EQ(node->settings.lod, 3);
+    node->settings.lod = 1;  // the settings panel during the drag
     policy->handle(*event(osgGA::GUIEventAdapter::FRAME, 3.0), actions);
-    EXPECT_EQ(node->settings.sampleDistanceFactor, 0.25) << "a rate set meanwhile stays";
+    EXPECT_EQ(node->settings.lod, 1) << "a level set meanwhile stays";
 }
 
 }  // namespace

@@ -26,11 +26,11 @@ TEST(RenderSettings, AccelerationSettingsReadBackAsTheyWereSet)
     std::string error;
     ASSERT_TRUE(s.set("adaptiveTolerance", "0.01", error)) << error;
     ASSERT_TRUE(s.set("adaptiveSteps", "8", error)) << error;
-    ASSERT_TRUE(s.set("lod", "1.5", error)) << error;
+    ASSERT_TRUE(s.set("lod", "2", error)) << error;
     ASSERT_TRUE(s.set("lodByDistance", "on", error)) << error;
     EXPECT_EQ(s.adaptiveTolerance, 0.01);
     EXPECT_EQ(s.adaptiveSteps, 8);
-    EXPECT_EQ(s.lod, 1.5);
+    EXPECT_EQ(s.lod, 2);
     EXPECT_TRUE(s.lodByDistance);
     for (const char* key : {"adaptiveTolerance", "adaptiveSteps", "lod", "lodByDistance"}) {
         RenderSettings copy;
@@ -39,7 +39,7 @@ TEST(RenderSettings, AccelerationSettingsReadBackAsTheyWereSet)
         EXPECT_NE(copy, RenderSettings{}) << key << " takes part in the comparison";
     }
     for (auto [key, value] : {std::pair{"adaptiveTolerance", "-0.1"}, {"adaptiveTolerance", "2"}, {"adaptiveSteps", "0"},
-                              {"adaptiveSteps", "2.5"}, {"adaptiveSteps", "65"}, {"lod", "-1"}, {"lod", "17"},
+                              {"adaptiveSteps", "2.5"}, {"adaptiveSteps", "65"}, {"lod", "-1"}, {"lod", "17"}, {"lod", "1.5"},
                               {"lodByDistance", "sometimes"}}) {
         RenderSettings t;
         EXPECT_FALSE(t.set(key, value, error)) << key << "=" << value;

@@ -20,12 +20,13 @@ void RenderSettingsPanel::apply(const std::string& key, const std::string& value
 
 void RenderSettingsPanel::draw()
 {
-    ImGui::SetNextWindowSize(ImVec2(400, 220), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(400, 330), ImGuiCond_FirstUseEver);
     ImGui::Begin("Volume settings");
     const std::pair<const char*, const char*> slots[] = {{"traversal", "RayTraversal"},
                                                          {"reconstruction", "Reconstruction"},
                                                          {"gradient", "Gradient"},
-                                                         {"illumination", "Illumination"}};
+                                                         {"illumination", "Illumination"},
+                                                         {"acceleration", "Acceleration"}};
     for (const auto& [key, slot] : slots) {
         const std::string current = _node->settings.get(key);
         if (ImGui::BeginCombo(key, current.empty() ? "(scene decides)" : current.c_str())) {
@@ -47,6 +48,21 @@ void RenderSettingsPanel::draw()
         v << stop;
         apply("earlyTermination", v.str());
     }
+    int cell = _node->settings.macrocellSize;
+    if (ImGui::SliderInt("macrocell size", &cell, 1, 64, "%d voxels", ImGuiSliderFlags_Logarithmic))
+        apply("macrocellSize", std::to_string(cell));
+    float tolerance = float(_node->settings.adaptiveTolerance);
+    if (ImGui::SliderFloat("adaptive tolerance", &tolerance, 1e-4f, 0.1f, "%.4f", ImGuiSliderFlags_Logarithmic)) {
+        std::ostringstream v;
+        v << tolerance;
+        apply("adaptiveTolerance", v.str());
+    }
+    int steps = _node->settings.adaptiveSteps;
+    if (ImGui::SliderInt("adaptive steps", &steps, 1, 64)) apply("adaptiveSteps", std::to_string(steps));
+    int lod = _node->settings.lod;
+    if (ImGui::SliderInt("level of detail", &lod, 0, 6)) apply("lod", std::to_string(lod));
+    bool byDistance = _node->settings.lodByDistance;
+    if (ImGui::Checkbox("level of detail by distance", &byDistance)) apply("lodByDistance", byDistance ? "on" : "off");
     bool clipping = !_node->settings.forceNull.count("ClipPosition");
     if (ImGui::Checkbox("clipping", &clipping)) {
         std::set<std::string> nulls = _node->settings.forceNull;

@@ -70,7 +70,7 @@ bool RenderSettings::operator==(const RenderSettings& o) const
            same(shadingThreshold, o.shadingThreshold) && same(ambient, o.ambient) && same(specular, o.specular) &&
            same(shininess, o.shininess) && same(roughness, o.roughness) && same(threshold, o.threshold) &&
            debugView == o.debugView && macrocellSize == o.macrocellSize &&
-           same(adaptiveTolerance, o.adaptiveTolerance) && adaptiveSteps == o.adaptiveSteps && same(lod, o.lod) &&
+           same(adaptiveTolerance, o.adaptiveTolerance) && adaptiveSteps == o.adaptiveSteps && lod == o.lod &&
            lodByDistance == o.lodByDistance &&
            functions == o.functions && forceNull == o.forceNull;
 }
@@ -123,7 +123,7 @@ std::string RenderSettings::get(const std::string& key) const
     if (k == "macrocellsize") return std::to_string(macrocellSize);
     if (k == "adaptivetolerance") return number(adaptiveTolerance);
     if (k == "adaptivesteps") return std::to_string(adaptiveSteps);
-    if (k == "lod") return number(lod);
+    if (k == "lod") return std::to_string(lod);
     if (k == "lodbydistance") return lodByDistance ? "on" : "off";
     if (k == "isovalue") return std::isnan(isoValue) ? std::string() : number(isoValue);
     if (k == "shadingthreshold") return number(shadingThreshold);
@@ -182,7 +182,6 @@ bool RenderSettings::set(const std::string& key, const std::string& value, std::
         {"roughness", &roughness, 0.0, 1.0, true},
         {"threshold", &threshold, 0.0, 1.0, false},
         {"adaptivetolerance", &adaptiveTolerance, 0.0, 1.0, false},
-        {"lod", &lod, 0.0, 16.0, false},
     };
     double v = 0.0;
     if (k == "samplerate") {
@@ -209,6 +208,12 @@ bool RenderSettings::set(const std::string& key, const std::string& value, std::
         if (!parseFiniteNumber(value, v) || v != std::floor(v) || v < 1.0 || v > 64.0)
             return error = "adaptiveSteps must be a whole number of steps in [1, 64], got '" + value + "'", false;
         adaptiveSteps = int(v);
+        return true;
+    }
+    if (k == "lod") {
+        if (!parseFiniteNumber(value, v) || v != std::floor(v) || v < 0.0 || v > 16.0)
+            return error = "lod must be a whole mip level in [0, 16], got '" + value + "'", false;
+        lod = int(v);
         return true;
     }
     if (k == "lodbydistance") {

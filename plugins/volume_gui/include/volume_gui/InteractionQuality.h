@@ -6,22 +6,23 @@
 namespace volren {
 
 /// The interaction-quality policy of `volren view`: while the camera moves or a TF point is
-/// dragged (a mouse button pressed or dragged, or the wheel turned), the node is sampled at half
-/// its rate (its step doubled, to at most 2 voxels); `idleSeconds` after the last such event the
-/// full rate returns with the next frame (unless the rate was changed meanwhile, e.g. in the
-/// settings panel: that change stays).
+/// dragged (a mouse button pressed or dragged, or the wheel turned), the node is sampled one
+/// level of detail coarser (its `lod` raised by one: the next mip level, with a step twice as
+/// long); `idleSeconds` after the last such event the full level returns with the next frame
+/// (unless the level was changed meanwhile, e.g. in the settings panel: that change stays).
 class InteractionQuality : public osgGA::GUIEventHandler
 {
 public:
     explicit InteractionQuality(VolumeNode* node, double idleSeconds = 0.3) : _node(node), _idle(idleSeconds) {}
     bool handle(const osgGA::GUIEventAdapter& ea, osgGA::GUIActionAdapter& aa) override;
-    bool lowered() const { return _lowered; }  ///< whether the reduced rate is in use
+    bool lowered() const { return _lowered; }  ///< whether the coarser level is in use
 
 private:
     osg::ref_ptr<VolumeNode> _node;
     double _idle;
     bool _lowered = false;
-    double _full = 0.5, _reduced = 1.0, _last = 0.0;
+    int _full = 0, _reduced = 1;
+    double _last = 0.0;
 };
 
 }  // namespace volren

@@ -30,10 +30,11 @@ struct RenderSettings
     /// Most steps of the march one sample stands for in a homogeneous macrocell (1 = none).
     int adaptiveSteps = 4;
     /// Level of detail: the volume is sampled from this level of its mip chain (0 = full
-    /// resolution; fractions blend two levels) with a step 2^lod times as long.
-    double lod = 0.0;
-    /// Level of detail by distance: the level rises (on top of lod) by log2 of how many voxels
-    /// a pixel covers where the volume is nearest the camera, so far volumes sample coarser.
+    /// resolution, each level half the voxels along each axis) with a step 2^lod times as long.
+    int lod = 0;
+    /// Level of detail by distance: on top of lod, the level rises by log2 of the voxels one
+    /// pixel covers where the volume is nearest the camera (rounded down), so far volumes sample
+    /// coarser and a volume filling the view keeps its full resolution.
     bool lodByDistance = false;
     /// Data value of the isosurface (isosurface traversal); NaN = the TF's first opaque value.
     double isoValue = std::numeric_limits<double>::quiet_NaN();

@@ -65,7 +65,8 @@ struct BindContext
     const Volume& volume;                ///< its volume
     const TransferFunction& transfer;    ///< its transfer function
     const RenderSettings& settings;      ///< its settings
-    double sampleDistance = 0.0;         ///< effective step in world units
+    double sampleDistance = 0.0;         ///< effective step in world units (2^lod times the node's)
+    int lod = 0;                         ///< mip level the volume is sampled from (level of detail)
     osg::StateSet& stateSet;             ///< per-node state of the volume's proxy geometry
     const std::map<std::string, int>& textureUnits;  ///< sampler name -> unit, from the compositor
     std::map<AuxData, osg::ref_ptr<osg::Texture>> aux = {};  ///< auxiliary textures made for this node

@@ -29,6 +29,21 @@ struct MacrocellGrid
     std::size_t size() const { return lo.size(); }
 };
 
+/// Edge and apron, in level-0 voxels, of the macrocells that serve a Reconstruction of
+/// `footprint` sampling mip level `lod` of a volume of `dims`.
+struct GridShape
+{
+    int cellSize = 8;
+    int apron = 1;
+};
+
+/// At level 0: cells of `macrocellSize` voxels, the footprint as apron. At level L > 0 (one
+/// voxel covering s level-0 voxels, VolumeMipChain.h): cells of macrocellSize level-L voxels
+/// (at most 1024), and an apron of ceil((footprint + 1.5) s) + 1 level-0 voxels: a level-L
+/// sample reads level-L voxels within footprint + 0.5 of its own, each an average of level-0
+/// voxels within its box (widened by less than one voxel per level where a size was odd).
+GridShape gridShapeFor(const osg::Vec3i& dims, int macrocellSize, int footprint, int lod);
+
 /// Texel value the GPU reads for stored voxel `i` of block (0, 0): unsigned integers / max,
 /// signed integers / max clamped to -1 (SNORM), floats as stored.
 double texelValue(const Volume& volume, std::size_t i);

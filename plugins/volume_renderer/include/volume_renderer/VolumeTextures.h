@@ -10,9 +10,13 @@ namespace volren {
 /// GL internal format keeping a voxel type's precision: R8, R8_SNORM, R16, R16_SNORM, R32F.
 GLenum internalFormatFor(VoxelType type);
 
+/// GL pixel type of a voxel type's stored values.
+GLenum pixelTypeFor(VoxelType type);
+
 /// 3D texture of the volume's voxels at full precision; the image references (does not copy)
-/// the Volume's buffer, so keep the Volume alive as long as the texture.
-osg::ref_ptr<osg::Texture3D> makeVolumeTexture(const Volume& volume);
+/// the Volume's buffer, so keep the Volume alive as long as the texture. `mipmapped`: with its
+/// whole mip chain (VolumeMipChain.h, a copy), sampled a whole level at a time.
+osg::ref_ptr<osg::Texture3D> makeVolumeTexture(const Volume& volume, bool mipmapped = false);
 
 /// 3D texture of `image` (kept, not copied) in `internalFormat`, clamped to its edges, with
 /// `filter` for minification and magnification.

@@ -14,11 +14,12 @@ namespace {
 const std::vector<UniformDecl> cellUniforms = {
     {"volren_cellScale", "vec3", ""}, {"volren_cellCount", "vec3", ""}, {"volren_coarseFactor", "float", ""}};
 
-/// The macrocell geometry: texture coordinate -> cell, cells per axis, cells per coarse cell.
+/// The macrocell geometry: texture coordinate -> cell, cells per axis, cells per coarse cell
+/// (cells grow with the mip level sampled: MacrocellGrid.h's gridShapeFor).
 void bindCells(BindContext& c)
 {
     const osg::Vec3i d = c.volume.dims();
-    const int size = c.settings.macrocellSize;
+    const int size = gridShapeFor(d, c.settings.macrocellSize, 0, c.lod).cellSize;
     const osg::Vec3i cells((d.x() + size - 1) / size, (d.y() + size - 1) / size, (d.z() + size - 1) / size);
     c.uniform("volren_cellScale", osg::Vec3f(float(d.x()) / float(size), float(d.y()) / float(size), float(d.z()) / float(size)));
     c.uniform("volren_cellCount", osg::Vec3f(float(cells.x()), float(cells.y()), float(cells.z())));

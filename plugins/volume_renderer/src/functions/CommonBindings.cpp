@@ -1,18 +1,22 @@
 #include "CommonBindings.h"
 
+#include <volume_renderer/VolumeMipChain.h>
+
 #include <volume_model/TransferFunction.h>
 #include <volume_model/Volume.h>
 #include <volume_model/VolumeNode.h>
 
 namespace volren::bindings {
 
-const std::vector<UniformDecl> geometry = {{"volren_worldSize", "vec3", ""}, {"volren_dims", "vec3", ""}};
+const std::vector<UniformDecl> geometry = {
+    {"volren_worldSize", "vec3", ""}, {"volren_dims", "vec3", ""}, {"volren_lod", "float", ""}};
 
 void bindGeometry(BindContext& c)
 {
-    const osg::Vec3i& d = c.volume.dims();
+    const osg::Vec3i d = mipDims(c.volume.dims(), c.lod);  // the voxels of the level sampled
     c.uniform("volren_worldSize", osg::Vec3f(c.boxSize.length2() > 0.0 ? c.boxSize : c.volume.worldSize()));
     c.uniform("volren_dims", osg::Vec3f(float(d.x()), float(d.y()), float(d.z())));
+    c.uniform("volren_lod", float(c.lod));
 }
 
 const std::vector<UniformDecl> window = {{"volren_window", "vec2", ""}, {"volren_tfResolution", "float", ""}};

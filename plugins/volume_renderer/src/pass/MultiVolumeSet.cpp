@@ -4,6 +4,7 @@
 #include <volume_renderer/SampleDistance.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace volren {
@@ -33,7 +34,8 @@ void updateSetProxy(VolumeProxy& proxy, std::vector<SetMember>& members, const C
     double threshold = 1.0;
     for (const SetMember& m : members) {
         const osg::Vec3d scale = m.candidate->matrix.getScale();  // member-local steps in scene units
-        step = std::min(step, effectiveSampleDistance(*m.candidate->node) * std::min({scale.x(), scale.y(), scale.z()}));
+        step = std::min(step, std::ldexp(effectiveSampleDistance(*m.candidate->node), m.candidate->lod) *
+                                  std::min({scale.x(), scale.y(), scale.z()}));
         threshold = std::min(threshold, m.candidate->node->settings.earlyTerminationThreshold);
     }
     const VolumeNode& first = *members.front().candidate->node;
@@ -52,7 +54,7 @@ void updateSetProxy(VolumeProxy& proxy, std::vector<SetMember>& members, const C
         const VolumeCandidate& c = *members[k].candidate;
         const Volume& volume = *c.node->getVolume();
         const osg::Matrixd memberTextureToScene = textureToLocal(volume) * c.matrix;
-        BindContext context = bindContextFor(*c.node, ss, *program);
+        BindContext context = bindContextFor(*c.node, ss, *program, c.lod);
         context.lights = c.offer.lights;
         context.member = "_v" + std::to_string(k);
         context.setToMember = setTextureToScene * osg::Matrixd::inverse(memberTextureToScene);

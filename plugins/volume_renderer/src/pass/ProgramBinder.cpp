@@ -2,19 +2,21 @@
 
 #include <volume_renderer/SampleDistance.h>
 
+#include <cmath>
 #include <cstdio>
 #include <stdexcept>
 #include <string>
 
 namespace volren {
 
-BindContext bindContextFor(const VolumeNode& node, osg::StateSet& stateSet, const ComposedProgram& program)
+BindContext bindContextFor(const VolumeNode& node, osg::StateSet& stateSet, const ComposedProgram& program, int lod)
 {
     return BindContext{.node = node,
                        .volume = *node.getVolume(),
                        .transfer = *node.getTransferFunction(),
                        .settings = node.settings,
-                       .sampleDistance = effectiveSampleDistance(node),
+                       .sampleDistance = std::ldexp(effectiveSampleDistance(node), lod),
+                       .lod = lod,
                        .stateSet = stateSet,
                        .textureUnits = program.textureUnits,
                        .boxSize = node.getVolume()->worldSize()};
@@ -52,8 +54,9 @@ osg::Texture* occupancyFor(const BindContext& context, const std::vector<const B
         std::snprintf(key, sizeof(key), " homogeneous within %a", varies ? context.settings.adaptiveTolerance : -1.0);
         fullKey += key;
     }
+    const GridShape shape = gridShapeFor(context.volume.dims(), context.settings.macrocellSize, footprint, context.lod);
     return textures.occupancy(
-        context.volume, context.transfer, context.settings.macrocellSize, footprint, fullKey,
+        context.volume, context.transfer, shape.cellSize, shape.apron, fullKey,
         [&]() -> std::pair<TextureCache::CellTest, TextureCache::CellTest> {
             TextureCache::CellTest homogeneous;
             if (varies)
@@ -83,7 +86,10 @@ void bindProgram(BindContext& context, const ComposedProgram& program,
         return false;
     };
     context.volumeTexture = [&textures, cull](const Volume& v, bool nearest) { return textures.volume(v, nearest, cull); };
-    if (needs(AuxData::VolumeTexture)) context.aux[AuxData::VolumeTexture] = textures.volume(context.volume, false, cull);
+    // With level of detail on, the texture holds the whole mip chain (also while the level is 0).
+    const bool mipmapped = context.settings.lod > 0 || context.settings.lodByDistance;
+    if (needs(AuxData::VolumeTexture))
+        context.aux[AuxData::VolumeTexture] = textures.volume(context.volume, false, cull, mipmapped);
     if (needs(AuxData::TransferFunctionTable))
         context.aux[AuxData::TransferFunctionTable] = textures.table(context.transfer, false, cull);
     if (needs(AuxData::PremultipliedTable))
@@ -94,9 +100,11 @@ void bindProgram(BindContext& context, const ComposedProgram& program,
         context.aux[AuxData::OccupancyGrid] = occupancyFor(context, mine, textures, cull, false);
     if (needs(AuxData::HomogeneityGrid))
         context.aux[AuxData::HomogeneityGrid] = occupancyFor(context, mine, textures, cull, true);
-    if (needs(AuxData::MacrocellRanges))
-        context.aux[AuxData::MacrocellRanges] =
-            textures.ranges(context.volume, context.settings.macrocellSize, footprintOf(mine), cull);
+    if (needs(AuxData::MacrocellRanges)) {
+        const GridShape shape =
+            gridShapeFor(context.volume.dims(), context.settings.macrocellSize, footprintOf(mine), context.lod);
+        context.aux[AuxData::MacrocellRanges] = textures.ranges(context.volume, shape.cellSize, shape.apron, cull);
+    }
 
     static const std::vector<ClipInfo> none;
     for (const Binding* b : mine) {

@@ -13,8 +13,9 @@
 namespace volren {
 
 /// The context that binds `program` for `node` into `stateSet`: the node, its volume, TF,
-/// settings and step, the volume's own box; lights, clips and member data are the caller's.
-BindContext bindContextFor(const VolumeNode& node, osg::StateSet& stateSet, const ComposedProgram& program);
+/// settings, mip level `lod` and step (2^lod times the node's), the volume's own box; lights,
+/// clips and member data are the caller's.
+BindContext bindContextFor(const VolumeNode& node, osg::StateSet& stateSet, const ComposedProgram& program, int lod);
 
 /// Binds the implementations of `program` that belong to `member` (-1: a single volume, or a
 /// set's own) into `context`: first the auxiliary data they ask for (only that), then each

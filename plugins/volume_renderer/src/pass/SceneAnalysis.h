@@ -17,6 +17,7 @@ struct VolumeCandidate
     osg::Matrix matrix;        ///< node -> VolumeScene
     SceneOffer offer;          ///< lights, clip shapes and opaque geometry, in the node's coordinates
     osg::BoundingBoxd bound;   ///< its box in the VolumeScene's axes
+    int lod = 0;               ///< mip level it is sampled from (levelOfDetail)
 };
 
 /// The volumes (with a volume, a TF and voxels), lights, clip shapes and opaque geometry below

@@ -1,3 +1,4 @@
+#include "LevelOfDetail.h"
 #include "MultiVolumeSet.h"
 #include "ProgramBinder.h"
 #include "SceneAnalysis.h"
@@ -66,7 +67,7 @@ VolumeProxy& VolumeScene::Pass::update(const VolumeCandidate& c, const ChosenCom
     std::shared_ptr<const ComposedProgram> program = compositor.program(chosen.composition);
     VolumeProxy& proxy = proxies[c.node];
     osg::StateSet& ss = proxy.update(c.node->getVolume()->worldSize(), program);
-    BindContext context = bindContextFor(*c.node, ss, *program);
+    BindContext context = bindContextFor(*c.node, ss, *program, c.lod);
     context.lights = c.offer.lights;
     context.writesDepth = program->writesDepth;
     bindProgram(context, *program, chosen.clips, -1, textures, cull);
@@ -97,8 +98,9 @@ void VolumeScene::traverse(osg::NodeVisitor& nv)
     auto* cv = nv.asCullVisitor();
     if (!cv) return;
 
-    const std::vector<VolumeCandidate> candidates =
+    std::vector<VolumeCandidate> candidates =
         analyseScene(*this, nv.getTraversalMask(), *cv->getModelViewMatrix(), pass.lighting);
+    for (VolumeCandidate& c : candidates) c.lod = levelOfDetail(c, *cv);
     std::vector<ChosenComposition> chosen;
     std::vector<osg::BoundingBoxd> bounds;
     for (const VolumeCandidate& c : candidates) {

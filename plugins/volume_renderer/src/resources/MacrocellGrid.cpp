@@ -1,6 +1,7 @@
 // The macrocell value-range grid of empty-space skipping, built in three separable passes
 // (ranges along x, then y, then z), and its occupancy under a classification.
 #include <volume_renderer/MacrocellGrid.h>
+#include <volume_renderer/VolumeMipChain.h>
 #include <volume_renderer/VolumeTextures.h>
 
 #include <glm/gtc/packing.hpp>
@@ -37,6 +38,14 @@ std::pair<int, int> span(int c, int size, int apron, int n)
 }
 
 }  // namespace
+
+GridShape gridShapeFor(const osg::Vec3i& dims, int macrocellSize, int footprint, int lod)
+{
+    if (lod <= 0) return {macrocellSize, footprint};
+    const double span = mipVoxelSpan(dims, lod);
+    const long long size = std::min<long long>(1024, (long long)(macrocellSize) << std::min(lod, 20));
+    return {int(std::max<long long>(size, macrocellSize)), int(std::ceil((footprint + 1.5) * span)) + 1};
+}
 
 double texelValue(const Volume& volume, std::size_t i)
 {

@@ -23,20 +23,21 @@ std::size_t imageBytes(const Map& map)
 {
     std::size_t bytes = 0;
     for (const auto& [key, entry] : map)
-        if (const osg::Image* image = entry.texture->getImage()) bytes += image->getTotalSizeInBytes();
+        if (const osg::Image* image = entry.texture->getImage()) bytes += image->getTotalSizeInBytesIncludingMipmaps();
     return bytes;
 }
 
 }  // namespace
 
-osg::Texture* TextureCache::volume(const Volume& volume, bool nearest, unsigned int cull)
+osg::Texture* TextureCache::volume(const Volume& volume, bool nearest, unsigned int cull, bool mipmapped)
 {
-    auto& gl = _volumes[{&volume, nearest}];
+    auto& gl = _volumes[{&volume, nearest, mipmapped}];
     if (!gl.texture || gl.modified != volume.modifiedCount()) {
         gl.source = &volume;
-        gl.texture = makeVolumeTexture(volume);
+        gl.texture = makeVolumeTexture(volume, mipmapped);
         if (nearest) {
-            gl.texture->setFilter(osg::Texture::MIN_FILTER, osg::Texture::NEAREST);
+            gl.texture->setFilter(osg::Texture::MIN_FILTER,
+                                  mipmapped ? osg::Texture::NEAREST_MIPMAP_NEAREST : osg::Texture::NEAREST);
             gl.texture->setFilter(osg::Texture::MAG_FILTER, osg::Texture::NEAREST);
         }
         gl.modified = volume.modifiedCount();

@@ -1,10 +1,9 @@
+#include <volume_renderer/VolumeMipChain.h>
 #include <volume_renderer/VolumeTextures.h>
 
 #include <osg/Image>
 
 namespace volren {
-
-namespace {
 
 GLenum pixelTypeFor(VoxelType type)
 {
@@ -18,8 +17,6 @@ GLenum pixelTypeFor(VoxelType type)
     return GL_UNSIGNED_BYTE;
 }
 
-}  // namespace
-
 GLenum internalFormatFor(VoxelType type)
 {
     switch (type) {
@@ -32,13 +29,19 @@ GLenum internalFormatFor(VoxelType type)
     return GL_R8;
 }
 
-osg::ref_ptr<osg::Texture3D> makeVolumeTexture(const Volume& volume)
+osg::ref_ptr<osg::Texture3D> makeVolumeTexture(const Volume& volume, bool mipmapped)
 {
-    osg::ref_ptr<osg::Image> image = new osg::Image;
-    const osg::Vec3i& d = volume.dims();
-    image->setImage(d.x(), d.y(), d.z(), internalFormatFor(volume.type()), GL_RED, pixelTypeFor(volume.type()),
-                    const_cast<unsigned char*>(volume.data()), osg::Image::NO_DELETE, 1);
+    osg::ref_ptr<osg::Image> image;
+    if (mipmapped) {
+        image = mipChainImage(volume);
+    } else {
+        image = new osg::Image;
+        const osg::Vec3i& d = volume.dims();
+        image->setImage(d.x(), d.y(), d.z(), internalFormatFor(volume.type()), GL_RED, pixelTypeFor(volume.type()),
+                        const_cast<unsigned char*>(volume.data()), osg::Image::NO_DELETE, 1);
+    }
     osg::ref_ptr<osg::Texture3D> texture = makeTexture3D(image.get(), internalFormatFor(volume.type()), osg::Texture::LINEAR);
+    if (mipmapped) texture->setFilter(osg::Texture::MIN_FILTER, osg::Texture::LINEAR_MIPMAP_NEAREST);  // whole levels
     texture->setName(volume.getName());
     return texture;
 }
