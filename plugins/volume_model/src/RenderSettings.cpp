@@ -71,7 +71,7 @@ bool RenderSettings::operator==(const RenderSettings& o) const
            same(shininess, o.shininess) && same(roughness, o.roughness) && same(threshold, o.threshold) &&
            debugView == o.debugView && macrocellSize == o.macrocellSize &&
            same(adaptiveTolerance, o.adaptiveTolerance) && adaptiveSteps == o.adaptiveSteps && lod == o.lod &&
-           lodByDistance == o.lodByDistance &&
+           lodByDistance == o.lodByDistance && texturePrecision == o.texturePrecision &&
            functions == o.functions && forceNull == o.forceNull;
 }
 
@@ -95,6 +95,7 @@ std::vector<std::pair<std::string, std::string>> RenderSettings::keys()
         {"adaptiveSteps", "adaptive sampling: most march steps one sample stands for in a homogeneous macrocell (1-64)"},
         {"lod", "level of detail: mip level the volume is sampled from, the step growing as 2^lod (0-16)"},
         {"lodByDistance", "level of detail by distance: the level rises where a pixel covers more than a voxel (on/off)"},
+        {"texturePrecision", "volume texture precision: auto (16bit on drivers that filter 8-bit textures coarsely), native, 16bit"},
         {"isoValue", "isosurface data value (empty = the TF's first opaque value)"},
         {"shadingThreshold", "opacity below which lighting_threshold shading leaves samples unlit"},
         {"ambient", "ambient light fraction"},
@@ -125,6 +126,7 @@ std::string RenderSettings::get(const std::string& key) const
     if (k == "adaptivesteps") return std::to_string(adaptiveSteps);
     if (k == "lod") return std::to_string(lod);
     if (k == "lodbydistance") return lodByDistance ? "on" : "off";
+    if (k == "textureprecision") return texturePrecision;
     if (k == "isovalue") return std::isnan(isoValue) ? std::string() : number(isoValue);
     if (k == "shadingthreshold") return number(shadingThreshold);
     if (k == "ambient") return number(ambient);
@@ -214,6 +216,13 @@ bool RenderSettings::set(const std::string& key, const std::string& value, std::
         if (!parseFiniteNumber(value, v) || v != std::floor(v) || v < 0.0 || v > 16.0)
             return error = "lod must be a whole mip level in [0, 16], got '" + value + "'", false;
         lod = int(v);
+        return true;
+    }
+    if (k == "textureprecision") {
+        const std::string p = lower(value);
+        if (p != "auto" && p != "native" && p != "16bit")
+            return error = "texturePrecision must be auto, native or 16bit, got '" + value + "'", false;
+        texturePrecision = p;
         return true;
     }
     if (k == "lodbydistance") {

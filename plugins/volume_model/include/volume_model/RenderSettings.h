@@ -36,6 +36,11 @@ struct RenderSettings
     /// pixel covers where the volume is nearest the camera (rounded down), so far volumes sample
     /// coarser and a volume filling the view keeps its full resolution.
     bool lodByDistance = false;
+    /// Texture precision of the volume: "native" keeps the voxel type's (R8 for 8-bit data),
+    /// "16bit" widens 8-bit data to 16-bit textures (the same values, twice the memory; filtered
+    /// finely where a driver rounds filtered 8-bit texels to 8 bits), "auto" widens only on such
+    /// drivers (Mesa's llvmpipe).
+    std::string texturePrecision = "auto";
     /// Data value of the isosurface (isosurface traversal); NaN = the TF's first opaque value.
     double isoValue = std::numeric_limits<double>::quiet_NaN();
     /// Samples below this classified opacity are not lit (lighting_threshold shading).

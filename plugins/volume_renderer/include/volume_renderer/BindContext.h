@@ -67,6 +67,7 @@ struct BindContext
     const RenderSettings& settings;      ///< its settings
     double sampleDistance = 0.0;         ///< effective step in world units (2^lod times the node's)
     int lod = 0;                         ///< mip level the volume is sampled from (level of detail)
+    bool coarseByteFiltering = false;    ///< the driver filters 8-bit textures to 8-bit results
     osg::StateSet& stateSet;             ///< per-node state of the volume's proxy geometry
     const std::map<std::string, int>& textureUnits;  ///< sampler name -> unit, from the compositor
     std::map<AuxData, osg::ref_ptr<osg::Texture>> aux = {};  ///< auxiliary textures made for this node

@@ -15,8 +15,9 @@ GLenum pixelTypeFor(VoxelType type);
 
 /// 3D texture of the volume's voxels at full precision; the image references (does not copy)
 /// the Volume's buffer, so keep the Volume alive as long as the texture. `mipmapped`: with its
-/// whole mip chain (VolumeMipChain.h, a copy), sampled a whole level at a time.
-osg::ref_ptr<osg::Texture3D> makeVolumeTexture(const Volume& volume, bool mipmapped = false);
+/// whole mip chain (VolumeMipChain.h, a copy), sampled a whole level at a time; `wide`: 8-bit
+/// data in 16-bit texels (the same values; texturePrecision).
+osg::ref_ptr<osg::Texture3D> makeVolumeTexture(const Volume& volume, bool mipmapped = false, bool wide = false);
 
 /// 3D texture of `image` (kept, not copied) in `internalFormat`, clamped to its edges, with
 /// `filter` for minification and magnification.

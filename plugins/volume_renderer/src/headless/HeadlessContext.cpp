@@ -1,3 +1,4 @@
+#include <volume_renderer/GraphicsDriver.h>
 #include <volume_renderer/HeadlessContext.h>
 
 #include <EGL/egl.h>
@@ -126,6 +127,7 @@ HeadlessContext::HeadlessContext()
     _description = "EGL " + used + ": OpenGL " + (version ? version : "?") + (_core ? " core profile" : "") + " / " +
                    (renderer ? renderer : "?");
     OSG_INFO << "volren: " << _description << std::endl;
+    recordGraphicsDriver(renderer ? renderer : "");
 }
 
 HeadlessContext::~HeadlessContext()

@@ -54,7 +54,7 @@ void updateSetProxy(VolumeProxy& proxy, std::vector<SetMember>& members, const C
         const VolumeCandidate& c = *members[k].candidate;
         const Volume& volume = *c.node->getVolume();
         const osg::Matrixd memberTextureToScene = textureToLocal(volume) * c.matrix;
-        BindContext context = bindContextFor(*c.node, ss, *program, c.lod);
+        BindContext context = bindContextFor(c, ss, *program);
         context.lights = c.offer.lights;
         context.member = "_v" + std::to_string(k);
         context.setToMember = setTextureToScene * osg::Matrixd::inverse(memberTextureToScene);

@@ -9,14 +9,16 @@
 
 namespace volren {
 
-BindContext bindContextFor(const VolumeNode& node, osg::StateSet& stateSet, const ComposedProgram& program, int lod)
+BindContext bindContextFor(const VolumeCandidate& candidate, osg::StateSet& stateSet, const ComposedProgram& program)
 {
+    const VolumeNode& node = *candidate.node;
     return BindContext{.node = node,
                        .volume = *node.getVolume(),
                        .transfer = *node.getTransferFunction(),
                        .settings = node.settings,
-                       .sampleDistance = std::ldexp(effectiveSampleDistance(node), lod),
-                       .lod = lod,
+                       .sampleDistance = std::ldexp(effectiveSampleDistance(node), candidate.lod),
+                       .lod = candidate.lod,
+                       .coarseByteFiltering = candidate.coarseByteFiltering,
                        .stateSet = stateSet,
                        .textureUnits = program.textureUnits,
                        .boxSize = node.getVolume()->worldSize()};
@@ -88,8 +90,10 @@ void bindProgram(BindContext& context, const ComposedProgram& program,
     context.volumeTexture = [&textures, cull](const Volume& v, bool nearest) { return textures.volume(v, nearest, cull); };
     // With level of detail on, the texture holds the whole mip chain (also while the level is 0).
     const bool mipmapped = context.settings.lod > 0 || context.settings.lodByDistance;
+    const std::string& precision = context.settings.texturePrecision;
+    const bool wide = precision == "16bit" || (precision == "auto" && context.coarseByteFiltering);
     if (needs(AuxData::VolumeTexture))
-        context.aux[AuxData::VolumeTexture] = textures.volume(context.volume, false, cull, mipmapped);
+        context.aux[AuxData::VolumeTexture] = textures.volume(context.volume, false, cull, mipmapped, wide);
     if (needs(AuxData::TransferFunctionTable))
         context.aux[AuxData::TransferFunctionTable] = textures.table(context.transfer, false, cull);
     if (needs(AuxData::PremultipliedTable))

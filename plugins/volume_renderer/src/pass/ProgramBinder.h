@@ -1,6 +1,7 @@
 #pragma once
 // Internal to the pass: binding a composed program's implementations for one frame.
 #include "../resources/TextureCache.h"
+#include "SceneAnalysis.h"
 
 #include <volume_renderer/ShaderCompositor.h>
 
@@ -12,10 +13,10 @@
 
 namespace volren {
 
-/// The context that binds `program` for `node` into `stateSet`: the node, its volume, TF,
-/// settings, mip level `lod` and step (2^lod times the node's), the volume's own box; lights,
-/// clips and member data are the caller's.
-BindContext bindContextFor(const VolumeNode& node, osg::StateSet& stateSet, const ComposedProgram& program, int lod);
+/// The context that binds `program` for the candidate's node into `stateSet`: the node, its
+/// volume, TF, settings, mip level and step (2^lod times the node's), the driver's filtering,
+/// the volume's own box; lights, clips and member data are the caller's.
+BindContext bindContextFor(const VolumeCandidate& candidate, osg::StateSet& stateSet, const ComposedProgram& program);
 
 /// Binds the implementations of `program` that belong to `member` (-1: a single volume, or a
 /// set's own) into `context`: first the auxiliary data they ask for (only that), then each

@@ -18,6 +18,7 @@ struct VolumeCandidate
     SceneOffer offer;          ///< lights, clip shapes and opaque geometry, in the node's coordinates
     osg::BoundingBoxd bound;   ///< its box in the VolumeScene's axes
     int lod = 0;               ///< mip level it is sampled from (levelOfDetail)
+    bool coarseByteFiltering = false;  ///< the driver filters 8-bit textures to 8-bit results
 };
 
 /// The volumes (with a volume, a TF and voxels), lights, clip shapes and opaque geometry below

@@ -6,6 +6,7 @@
 #include "../resources/TextureCache.h"
 #include "../resources/VolumeProxy.h"
 
+#include <volume_renderer/GraphicsDriver.h>
 #include <volume_renderer/SampleDistance.h>
 #include <volume_renderer/ScreenPasses.h>
 #include <volume_renderer/VolumeScene.h>
@@ -67,7 +68,7 @@ VolumeProxy& VolumeScene::Pass::update(const VolumeCandidate& c, const ChosenCom
     std::shared_ptr<const ComposedProgram> program = compositor.program(chosen.composition);
     VolumeProxy& proxy = proxies[c.node];
     osg::StateSet& ss = proxy.update(c.node->getVolume()->worldSize(), program);
-    BindContext context = bindContextFor(*c.node, ss, *program, c.lod);
+    BindContext context = bindContextFor(c, ss, *program);
     context.lights = c.offer.lights;
     context.writesDepth = program->writesDepth;
     bindProgram(context, *program, chosen.clips, -1, textures, cull);
@@ -100,7 +101,11 @@ void VolumeScene::traverse(osg::NodeVisitor& nv)
 
     std::vector<VolumeCandidate> candidates =
         analyseScene(*this, nv.getTraversalMask(), *cv->getModelViewMatrix(), pass.lighting);
-    for (VolumeCandidate& c : candidates) c.lod = levelOfDetail(c, *cv);
+    const bool coarseBytes = filtersBytesCoarsely();
+    for (VolumeCandidate& c : candidates) {
+        c.lod = levelOfDetail(c, *cv);
+        c.coarseByteFiltering = coarseBytes;
+    }
     std::vector<ChosenComposition> chosen;
     std::vector<osg::BoundingBoxd> bounds;
     for (const VolumeCandidate& c : candidates) {

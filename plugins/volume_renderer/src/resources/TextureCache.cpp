@@ -29,12 +29,12 @@ std::size_t imageBytes(const Map& map)
 
 }  // namespace
 
-osg::Texture* TextureCache::volume(const Volume& volume, bool nearest, unsigned int cull, bool mipmapped)
+osg::Texture* TextureCache::volume(const Volume& volume, bool nearest, unsigned int cull, bool mipmapped, bool wide)
 {
-    auto& gl = _volumes[{&volume, nearest, mipmapped}];
+    auto& gl = _volumes[{&volume, nearest, mipmapped, wide}];
     if (!gl.texture || gl.modified != volume.modifiedCount()) {
         gl.source = &volume;
-        gl.texture = makeVolumeTexture(volume, mipmapped);
+        gl.texture = makeVolumeTexture(volume, mipmapped, wide);
         if (nearest) {
             gl.texture->setFilter(osg::Texture::MIN_FILTER,
                                   mipmapped ? osg::Texture::NEAREST_MIPMAP_NEAREST : osg::Texture::NEAREST);

@@ -23,8 +23,8 @@ class TextureCache
 {
 public:
     /// The 3D texture of `volume` (nearest-voxel filtering when `nearest`; with its mip chain
-    /// when `mipmapped`), used in cull `cull`.
-    osg::Texture* volume(const Volume& volume, bool nearest, unsigned int cull, bool mipmapped = false);
+    /// when `mipmapped`; 8-bit data as 16-bit texels when `wide`), used in cull `cull`.
+    osg::Texture* volume(const Volume& volume, bool nearest, unsigned int cull, bool mipmapped = false, bool wide = false);
     /// The 1D table of `transfer` (associated colours when `premultiplied`), used in cull `cull`.
     osg::Texture* table(const TransferFunction& transfer, bool premultiplied, unsigned int cull);
     /// What decides a cell's occupancy texel under one classification (MacrocellGrid.h's occupancyOf).
@@ -56,7 +56,7 @@ private:
         unsigned int modified = 0;
         unsigned int lastCull = 0;
     };
-    std::map<std::tuple<const Volume*, bool, bool>, Entry<Volume, osg::Texture3D>> _volumes;
+    std::map<std::tuple<const Volume*, bool, bool, bool>, Entry<Volume, osg::Texture3D>> _volumes;
     std::map<std::pair<const TransferFunction*, bool>, Entry<TransferFunction, osg::Texture1D>> _tables;
     struct Ranges
     {
