@@ -36,8 +36,9 @@ bool volren_clipPosition(vec3 pos);
 // none before tFar may be).
 // The answer for t holds for samples up to tRecheck, so traversals ask again only past it.
 float volren_skip(vec3 origin, vec3 dir, float t, float tFar, out float tRecheck);
-// The same for MIP (above = true) and MinIP: no sample in [t, t') can pass level (be > level;
-// for MinIP < level), the ray's running maximum (minimum).
+// The same for MIP and isosurfaces (above = true) and MinIP: no sample in [t, t') can pass
+// level (be > level; for MinIP < level): the ray's running maximum, the float just below the iso
+// value, the running minimum.
 float volren_skip(vec3 origin, vec3 dir, float t, float tFar, float level, bool above, out float tRecheck);
 // Adaptive sampling: how many of the march's steps from the sample at t on one sample may stand
 // for, as long as they end by tEnd (1: every step is sampled; the answer holds up to tEnd).

@@ -56,8 +56,15 @@ std::vector<BenchConfig> defaultMatrix()
     add("illumination", {"lambert", "cook_torrance"});
     add("lighting", {"off"});
     add("earlyTermination", {"0.95", "0.99", "1"});  // 0.95: the default before it was error-bounded
-    add("acceleration", {"null"});  // empty-space skipping off: same image, the cost of marching all
+    add("acceleration", {"null", "adaptive"});  // null: skipping off (same image, the cost of marching all)
+    m.push_back({"acceleration=adaptive+adaptiveSteps=8", {{"acceleration", "adaptive"}, {"adaptiveSteps", "8"}}, "native"});
+    m.push_back({"acceleration=adaptive+adaptiveTolerance=0.02",
+                 {{"acceleration", "adaptive"}, {"adaptiveTolerance", "0.02"}},
+                 "native"});
     add("macrocellSize", {"4", "16"});
+    add("lod", {"1", "2"});
+    add("lodByDistance", {"on"});
+    add("texturePrecision", {"native", "16bit"});
     add("jitter", {"null", "texture"});
     add("classification", {"premultiplied"});
     for (const char* p : {"8bit", "16bit", "float"}) m.push_back({std::string("precision=") + p, {}, p});
@@ -298,7 +305,8 @@ private:
     std::map<std::string, ReferenceImage> _truths;  ///< by what is drawn (the lighting model)
 };
 
-/// The configurations --configs names, in its order (all of the matrix without it).
+/// The configurations --configs names, in its order (all of the matrix without it). A name not
+/// in the matrix is read as settings: KEY=VALUE, several joined by '+' (checked when applied).
 std::vector<BenchConfig> chosenConfigs(const BenchOptions& options)
 {
     const std::vector<BenchConfig> matrix = defaultMatrix();
@@ -306,8 +314,19 @@ std::vector<BenchConfig> chosenConfigs(const BenchOptions& options)
     std::vector<BenchConfig> chosen;
     for (const std::string& name : options.only) {
         auto it = std::find_if(matrix.begin(), matrix.end(), [&](const BenchConfig& c) { return c.name == name; });
-        if (it == matrix.end()) throw UsageError("--configs: no configuration '" + name + "'");
-        chosen.push_back(*it);
+        if (it != matrix.end()) {
+            chosen.push_back(*it);
+            continue;
+        }
+        BenchConfig config{name, {}, "native"};
+        std::stringstream parts(name);
+        for (std::string part; std::getline(parts, part, '+');) {
+            const std::size_t eq = part.find('=');
+            if (eq == std::string::npos || eq == 0)
+                throw UsageError("--configs: '" + name + "' is no configuration of the matrix nor KEY=VALUE[+KEY=VALUE...]");
+            config.settings.emplace_back(part.substr(0, eq), part.substr(eq + 1));
+        }
+        chosen.push_back(config);
     }
     return chosen;
 }

@@ -1,10 +1,11 @@
-// Acceleration/range: skipping for MIP and MinIP over the macrocells' value ranges.
+// Acceleration/range: skipping for MIP, MinIP and isosurfaces over the macrocells' value ranges.
 // volren_cellRanges holds per cell of macrocellSize^3 voxels the smallest and largest texel
 // value its samples can read (the Reconstruction's footprint included; +inf, -inf for cells of
 // NaN only), and beside it along x, from texel volren_cellCount.x on, the same for coarse cells
 // of volren_coarseFactor^3 cells. A (coarse) cell whose values cannot pass level (above: the
-// running maximum; else the running minimum) is left at its exit, one cell per pass of the
-// traversal's own loop: the extremum, and so the image, is the one without skipping.
+// running maximum, or the float below the iso value; else the running minimum) is left at its
+// exit, one cell per pass of the traversal's own loop: the extremum or the first hit, and so the
+// image, is the one without skipping.
 // float volren_skip(vec3 origin, vec3 dir, float t, float tFar, float level, bool above, out float tRecheck)
 // int volren_stepsPerSample(vec3 origin, vec3 dir, float t, out float tEnd)
 float volren_skip(vec3 origin, vec3 dir, float t, float tFar, float level, bool above, out float tRecheck)

@@ -6,6 +6,7 @@
 // void volren_memberRay(vec3 origin, vec3 dir, out vec3 memberOrigin, out vec3 memberDir,
 //                       out float worldPerT, inout float tNear, inout float tFar)
 // float volren_memberSample(vec3 pos, vec3 memberDir, float worldLength, out vec3 emitted)
+// float volren_memberSkip(vec3 memberOrigin, vec3 memberDir, float t, float tFar, out float tRecheck)
 
 // The set's ray in this member's texture space (volren_setToMember: set box -> member texture
 // space), its world length per unit t in the member's local units, and [tNear, tFar] narrowed to
@@ -33,4 +34,11 @@ float volren_memberSample(vec3 pos, vec3 memberDir, float worldLength, out vec3 
     float dTau = volren_opticalDepth(c.a, worldLength / volren_referenceStep);
     if (dTau > 0.0) emitted = volren_shade(pos, -normalize(memberDir * volren_worldSize), c);
     return dTau;
+}
+
+// This member's empty-space skipping along its ray (its own Acceleration): no sample of it in
+// [t, returned) may be visible; the answer holds up to tRecheck.
+float volren_memberSkip(vec3 memberOrigin, vec3 memberDir, float t, float tFar, out float tRecheck)
+{
+    return volren_skip(memberOrigin, memberDir, t, tFar, tRecheck);
 }

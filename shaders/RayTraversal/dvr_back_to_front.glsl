@@ -27,7 +27,7 @@ vec4 volren_traverse(vec3 origin, vec3 dir, float tNear, float tFar, float jitte
             float reversedRecheck;
             float tNext = -volren_skip(origin, -dir, -tMid, -tNear, reversedRecheck);
             tRecheck = -reversedRecheck;
-            int at = volren_leapBack(m, i, tMid, tNext, tNear);
+            int at = volren_leapBack(m, i, tMid, tNext, tNear, tFar);
             visible = at == i;
             next = visible ? next : at;
         }

@@ -26,7 +26,7 @@ vec4 volren_traverse(vec3 origin, vec3 dir, float tNear, float tFar, float jitte
         float tMid = 0.5 * (segStart + segEnd);
         bool visible = lenT > 0.0;
         if (visible && tMid >= tRecheck) {  // empty-space skipping: leap to the next sample that may show
-            int at = volren_leap(m, i, tMid, volren_skip(origin, dir, tMid, tFar, tRecheck), tFar);
+            int at = volren_leap(m, i, tMid, volren_skip(origin, dir, tMid, tFar, tRecheck), tNear, tFar);
             visible = at == i;
             next = visible ? next : at;
         }

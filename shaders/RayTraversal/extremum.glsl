@@ -17,7 +17,7 @@ float volren_extremum(vec3 origin, vec3 dir, float tNear, float tFar, float jitt
         float tMid = 0.5 * (segStart + segEnd);
         bool take = segEnd > segStart;
         if (take && found && tMid >= tRecheck) {
-            int at = volren_leap(m, i, tMid, volren_skip(origin, dir, tMid, tFar, best, maximum, tRecheck), tFar);
+            int at = volren_leap(m, i, tMid, volren_skip(origin, dir, tMid, tFar, best, maximum, tRecheck), tNear, tFar);
             take = at == i;
             next = take ? next : at;
         }

@@ -53,18 +53,32 @@ int volren_segmentStartingFrom(VolrenMarch m, float t)
     return int(clamp(ceil((t - m.firstEnd) / m.stepT) + 1.0, 0.0, float(m.count)));
 }
 
+// The midpoint of segment i, computed as the march computes it.
+float volren_segmentMid(VolrenMarch m, int i, float tNear, float tFar)
+{
+    return 0.5 * (volren_segmentStart(m, i, tNear, tFar) + volren_segmentEnd(m, i, tFar));
+}
+
 // Where a march goes on after volren_skip answered tNext for the sample of segment i at tMid:
-// i itself when that sample may show, else the first segment at or past tNext (count, or -1
-// marching backwards, when nothing before the ray's end may show).
-int volren_leap(VolrenMarch m, int i, float tMid, float tNext, float tFar)
+// i itself when that sample may show, else the first segment whose midpoint is at or past tNext
+// (count, or -1 marching backwards, when nothing before the ray's end may show). The index from
+// the division is checked against the midpoint the march itself computes, so float rounding
+// never leaps over a sample just past tNext (one the skipping proved nothing about).
+int volren_leap(VolrenMarch m, int i, float tMid, float tNext, float tNear, float tFar)
 {
     if (tNext >= tFar) return m.count;
-    return tNext > tMid ? max(i + 1, volren_segmentFrom(m, tNext)) : i;
+    if (!(tNext > tMid)) return i;
+    int j = max(i + 1, volren_segmentFrom(m, tNext));
+    if (j - 1 > i && volren_segmentMid(m, j - 1, tNear, tFar) >= tNext) --j;
+    return j;
 }
-int volren_leapBack(VolrenMarch m, int i, float tMid, float tNext, float tNear)
+int volren_leapBack(VolrenMarch m, int i, float tMid, float tNext, float tNear, float tFar)
 {
     if (tNext <= tNear) return -1;
-    return tNext < tMid ? min(i - 1, volren_segmentUpTo(m, tNext)) : i;
+    if (!(tNext < tMid)) return i;
+    int j = min(i - 1, volren_segmentUpTo(m, tNext));
+    if (j + 1 < i && volren_segmentMid(m, j + 1, tNear, tFar) <= tNext) ++j;
+    return j;
 }
 
 // Adds a segment's optical depth dTau to depth, Kahan-compensated (tiny depths stay exact

@@ -146,10 +146,11 @@ TEST(VolrenCli, ParaViewPresetIsFittedToTheDataRangeUnlessKeptAsIs)
     const std::string common = " --size 32x32 --ortho 400 --set jitter=off --set lighting=off --tf '" + dir + "/p.json#red-blue'";
     CliRun run = volren("render '" + volume + "' -o '" + dir + "/kept.png'" + common + " --tf-keep-range");
     ASSERT_EQ(run.exitCode, 0) << run.output;
-    // Kept: every tissue value (>= 1) is opaque pure blue, so the first tissue sample decides.
+    // Kept: every tissue value (>= 1) is opaque pure blue, so the first tissue samples decide
+    // (values between 0 and 1 on the air's border add a trace of red: 3 % measured).
     Image img = readImage(dir + "/kept.png");
-    EXPECT_EQ(img.at(16, 16, 2), 1.0f);
-    EXPECT_EQ(img.at(16, 16, 0), 0.0f);
+    EXPECT_GT(img.at(16, 16, 2), 0.95f);
+    EXPECT_LT(img.at(16, 16, 0), 0.05f);
     run = volren("render '" + volume + "' -o '" + dir + "/fitted.png'" + common);
     ASSERT_EQ(run.exitCode, 0) << run.output;
     // Fitted onto 0 .. 254: tissue is partly red and no longer opaque at its first sample.
@@ -280,13 +281,14 @@ TEST(VolrenCli, BenchMeasuresAgainstTheReferenceVolrenReferenceMakes)
 {
     // The rod of ct-instrument is opaque geometry: bench's truth must end the rays at it and
     // composite over it, as `volren reference` does, so bench's error is what `volren compare`
-    // reports for render against reference (the same view, tolerance and normals).
+    // reports for render against reference (the same view, tolerance and, by default in both,
+    // central-difference normals).
     VOLREN_REQUIRE_SHARED_DATA();
     const std::string dir = tempDirectory();
     const std::string scene = std::string(VOLREN_SOURCE_DIR) + "/scenes/ct-instrument.osgt";
     const std::string size = " --size 48x40";
     const CliRun bench = volren("bench '" + scene + "'" + size +
-                                " --frames 1 --configs default --tolerance 1e-4 --normals exact --out '" + dir + "/b'");
+                                " --frames 1 --configs default --tolerance 1e-4 --out '" + dir + "/b'");
     ASSERT_EQ(bench.exitCode, 0) << bench.output;
     ASSERT_EQ(volren("render '" + scene + "' -o '" + dir + "/gpu.exr'" + size).exitCode, 0);
     ASSERT_EQ(volren("reference '" + scene + "' -o '" + dir + "/truth.exr'" + size).exitCode, 0);
@@ -298,6 +300,31 @@ TEST(VolrenCli, BenchMeasuresAgainstTheReferenceVolrenReferenceMakes)
     ASSERT_GT(benched, 0.0) << bench.output;
     ASSERT_GT(compared, 0.0) << compare.output;
     EXPECT_NEAR(rmse, compared, 1e-4 * compared) << bench.output << compare.output;
+}
+
+TEST(VolrenCli, SkippingLeavesEveryTraversalsImageOfARealCtBitIdentical)
+{
+    // The bonsai as `volren render` frames it at 256x256 with jittered rays, each traversal that
+    // skips against acceleration=null. An isosurface march that stopped when a skip answered
+    // exactly the ray's end lost the sample there and missed one silhouette pixel of 65,536
+    // here (pixel 115,196): the answer covers samples before it, not at it.
+    VOLREN_REQUIRE_SHARED_DATA();
+    const std::string dir = tempDirectory();
+    const std::string volume = sharedData("ct/bonsai.nii.gz");
+    for (const char* traversal : {"isosurface", "dvr_front_to_back", "mip"}) {
+        const std::string common = " --size 256x256 --set traversal=" + std::string(traversal);
+        ASSERT_EQ(volren("render '" + volume + "' -o '" + dir + "/on.exr'" + common).exitCode, 0);
+        ASSERT_EQ(volren("render '" + volume + "' -o '" + dir + "/off.exr'" + common + " --set acceleration=null").exitCode, 0);
+        const Image on = readImage(dir + "/on.exr"), off = readImage(dir + "/off.exr");
+        ASSERT_EQ(on.pixels.size(), off.pixels.size());
+        std::size_t differing = 0;
+        for (std::size_t i = 0; i < on.pixels.size(); ++i) differing += on.pixels[i] != off.pixels[i];
+        EXPECT_EQ(differing, 0u) << traversal;
+        float covered = 0.0f;
+        for (int y = 0; y < 256; ++y)
+            for (int x = 0; x < 256; ++x) covered += on.at(x, y, 3) > 0.05f;
+        EXPECT_GT(covered, 2000.0f) << traversal;
+    }
 }
 
 TEST(VolrenCli, InfoPrintsGeometryAndValues)

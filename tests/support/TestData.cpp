@@ -32,6 +32,8 @@ std::string tempDirectory()
 {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
     std::string name = std::string("volren-") + info->test_suite_name() + "-" + info->name();
+    // The render suite runs again in a core profile (ctest -j runs both at once): apart.
+    if (const char* profile = std::getenv("VOLREN_GL_PROFILE"); profile && *profile) name += std::string("-") + profile;
     for (char& c : name)
         if (c == '/') c = '_';
     const std::filesystem::path dir = std::filesystem::temp_directory_path() / name;

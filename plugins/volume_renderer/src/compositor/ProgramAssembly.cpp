@@ -222,7 +222,7 @@ void ProgramAssembly::appendMembers(const std::string& numerics, const std::stri
     std::set<std::string> shared = definedNames(numerics);
     for (const std::string& n : definedNames(file("RaySetup/ray.glsl"))) shared.insert(n);
     const ShaderFunction* glue = lookup("MultiVolume", "member");
-    std::string rays, samples;
+    std::string rays, samples, skips;
     for (std::size_t k = 0; k < _composition.members.size(); ++k) {
         const std::string suffix = "_v" + std::to_string(k);
         const std::string of = " (member " + std::to_string(k) + ")";
@@ -232,6 +232,7 @@ void ProgramAssembly::appendMembers(const std::string& numerics, const std::stri
         const std::string branch = std::string(k ? "    else if" : "    if") + " (k == " + std::to_string(k) + ")";
         rays += branch + " volren_memberRay" + suffix + "(origin, dir, memberOrigin, memberDir, worldPerT, tNear, tFar);\n";
         samples += branch + " return volren_memberSample" + suffix + "(pos, memberDir, worldLength, emitted);\n";
+        skips += branch + " return volren_memberSkip" + suffix + "(memberOrigin, memberDir, t, tFar, tRecheck);\n";
     }
     append("<MultiVolume dispatchers over " + std::to_string(_composition.members.size()) + " members>",
            "void volren_setMemberRay(int k, vec3 origin, vec3 dir, out vec3 memberOrigin, out vec3 memberDir,\n"
@@ -240,7 +241,9 @@ void ProgramAssembly::appendMembers(const std::string& numerics, const std::stri
                rays +
                "}\n"
                "float volren_setMemberSample(int k, vec3 pos, vec3 memberDir, float worldLength, out vec3 emitted)\n{\n" +
-               samples + "    emitted = vec3(0.0);\n    return 0.0;\n}\n");
+               samples + "    emitted = vec3(0.0);\n    return 0.0;\n}\n"
+               "float volren_setMemberSkip(int k, vec3 memberOrigin, vec3 memberDir, float t, float tFar, out float tRecheck)\n{\n" +
+               skips + "    tRecheck = 1e30;\n    return t;\n}\n");
 }
 
 const ShaderFunction* ProgramAssembly::assemble()

@@ -20,7 +20,7 @@ const std::vector<SlotInfo>& slots()
          .join = " || ",
          .wrap = "    return {calls};\n",
          .empty = "    return false;\n"},
-        {.name = "Acceleration", .function = "volren_skip", .perSet = true},
+        {.name = "Acceleration", .function = "volren_skip"},  // per member of a set: each skips its own medium
         {.name = "Jitter", .function = "volren_jitter", .perSet = true},
         {.name = "ClipRay",
          .function = "volren_clipRay",

@@ -11,7 +11,8 @@ void registerMultiVolumeFunctions(ShaderFunctionRegistry& registry)
                   .name = "member",
                   .uniforms = {{"volren_setToMember", "mat4", ""}},
                   .bind = [](BindContext& c) { c.uniform("volren_setToMember", osg::Matrixf(c.setToMember)); },
-                  .traits = {.calls = SlotList{"Reconstruction", "Classification", "ClipPosition", "ClipRay", "Shading"},
+                  .traits = {.calls = SlotList{"Reconstruction", "Classification", "ClipPosition", "ClipRay", "Shading",
+                                               "Acceleration"},
                              .multiVolume = true}});
 }
 

@@ -104,8 +104,9 @@ void registerRayTraversalFunctions(ShaderFunctionRegistry& registry)
     };
     registry.add(gmip);
 
-    ShaderFunction iso = traversal("isosurface", compositing, {{"volren_isoTexel", "float", ""}});
+    ShaderFunction iso = traversal("isosurface", skipping, {{"volren_isoTexel", "float", ""}});
     iso.traits.writesDepth = true;
+    iso.traits.skips = "extremum";  // leaps over cells whose values stay below the iso value
     iso.bind = [](BindContext& c) {
         bindMarching(c);
         const double stored = (isoValueOf(c) - c.volume.rescaleIntercept()) / c.volume.rescaleSlope();
