@@ -114,6 +114,7 @@ struct BenchOptions
     double tolerance = 1e-3;
     bool vtk = false;
     bool checkFront = false;  ///< fail when a row beats the default on both axes
+    std::string tf;           ///< --tf FILE: every volume's transfer function (as volren render's)
     ReferenceOptions::Gradient normals = ReferenceOptions::Gradient::CentralDifferences;
 };
 
@@ -152,6 +153,8 @@ BenchOptions parseBenchOptions(const std::vector<std::string>& args)
             o.checkFront = true;
         } else if (a == "--vtk") {
             o.vtk = true;
+        } else if (a == "--tf") {
+            o.tf = value();
         } else if (a == "--normals") {
             const std::string& v = value();
             if (v == "exact") o.normals = ReferenceOptions::Gradient::Exact;
@@ -178,6 +181,7 @@ public:
         ro.input = input;
         ro.width = width;
         ro.height = height;
+        ro.tfFile = options.tf;
         _scene = loadScene(ro);
         _dataset = input.empty() ? "default.osgt (ch2.nii.gz)" : osgDB::getSimpleFileName(input);
         _nodes = findVolumeNodes(*_scene);

@@ -25,7 +25,7 @@ const char* const usage =
     "                                (OUT.osgt/.osgb/.osgx: the volume's default scene)\n"
     "  volren view [INPUT] [options]   interactive window (needs a display)\n"
     "  volren shader [INPUT] [--set KEY=VALUE ...]   print each volume's composed ray caster\n"
-    "  volren bench [INPUT ...] [--size WxH[,WxH...]] [--frames N] [--out DIR] [--configs 'A;B'] [--vtk]\n"
+    "  volren bench [INPUT ...] [--size WxH[,WxH...]] [--frames N] [--out DIR] [--configs 'A;B'] [--vtk] [--tf FILE]\n"
     "                [--tolerance T] [--normals central|exact] [--check-front]   speed against accuracy: table, CSV,\n"
     "                JSON, plot; --check-front fails when a row beats the default on both axes\n"
     "  volren permutations [--list] [--compile | --render] [--pairwise] [--max-instances N]\n"

@@ -144,7 +144,7 @@ TEST(CompositionPolicy, ASetOwnsTheRayAndTheDepthClip)
     EXPECT_TRUE(set.composition.members[1].instancesOf("ClipRay").empty());
     for (const Composition& m : set.composition.members) {
         EXPECT_EQ(m.functionFor("Jitter"), "null");
-        EXPECT_EQ(m.functionFor("Acceleration"), "null");
+        EXPECT_EQ(m.functionFor("Acceleration"), "occupancy") << "each member skips its own medium";
         EXPECT_EQ(m.functionFor("RayTraversal"), "dvr_front_to_back");
     }
     EXPECT_EQ(set.composition.members[0].lightCount, 1u);
@@ -165,9 +165,10 @@ TEST(CompositionPolicy, EmptySpaceSkippingIsTheDefaultWhereverItCanWork)
     EXPECT_EQ(acceleration({{"RayTraversal", "dvr_back_to_front"}}), "occupancy");
     for (const char* classification : {"tf1d", "premultiplied", "threshold", "null"})
         EXPECT_EQ(acceleration({{"Classification", classification}}), "occupancy") << classification;
-    for (const char* traversal : {"mip", "minip"})
-        EXPECT_EQ(acceleration({{"RayTraversal", traversal}}), "range") << traversal << " leaps past what cannot pass its extremum";
-    for (const char* traversal : {"average", "mida", "gmip", "isosurface"})
+    for (const char* traversal : {"mip", "minip", "isosurface"})
+        EXPECT_EQ(acceleration({{"RayTraversal", traversal}}), "range") << traversal << " leaps past what cannot pass its level";
+    EXPECT_EQ(acceleration({{"RayTraversal", "dvr_back_to_front"}, {"Acceleration", "adaptive"}}), "adaptive") << "when asked";
+    for (const char* traversal : {"average", "mida", "gmip"})
         EXPECT_EQ(acceleration({{"RayTraversal", traversal}}), "null") << traversal << " does not leap";
     EXPECT_EQ(acceleration({{"RayTraversal", "mip"}, {"Reconstruction", "null"}}), "null");
     EXPECT_EQ(acceleration({{"Reconstruction", "null"}}), "null") << "a constant fetch says nothing of the voxels";
