@@ -1,9 +1,9 @@
 // Reconstruction/nearest: the value of the voxel whose cell contains pos (volren_dims: the
-// voxels of the mip level volren_lod the node samples).
+// voxels of the volume texture, the mip level the node samples).
 // float volren_fetchScalar(vec3 pos)
 float volren_fetchScalar(vec3 pos)
 {
     ivec3 size = ivec3(volren_dims);
     ivec3 voxel = clamp(ivec3(floor(pos * volren_dims)), ivec3(0), size - 1);
-    return texelFetch(volren_volume, voxel, int(volren_lod)).r;
+    return texelFetch(volren_volume, voxel, 0).r;
 }

@@ -1,6 +1,6 @@
 // Reconstruction/tricubic: cubic B-spline reconstruction from 8 trilinear fetches
 // (Sigg & Hadwiger, GPU Gems 2 ch. 20). It reproduces linear fields exactly and smooths noise.
-// volren_dims are the voxels of the mip level volren_lod the node samples.
+// volren_dims are the voxels of the volume texture (the mip level the node samples).
 // float volren_fetchScalar(vec3 pos)
 float volren_fetchScalar(vec3 pos)
 {
@@ -17,14 +17,14 @@ float volren_fetchScalar(vec3 pos)
     vec3 g0 = w0 + w1, g1 = w2 + w3;
     vec3 h0 = (index - 0.5 + w1 / g0) / volren_dims;  // texel centres are at (i + 0.5) / n
     vec3 h1 = (index + 1.5 + w3 / g1) / volren_dims;
-    float v000 = textureLod(volren_volume, vec3(h0.x, h0.y, h0.z), volren_lod).r;
-    float v100 = textureLod(volren_volume, vec3(h1.x, h0.y, h0.z), volren_lod).r;
-    float v010 = textureLod(volren_volume, vec3(h0.x, h1.y, h0.z), volren_lod).r;
-    float v110 = textureLod(volren_volume, vec3(h1.x, h1.y, h0.z), volren_lod).r;
-    float v001 = textureLod(volren_volume, vec3(h0.x, h0.y, h1.z), volren_lod).r;
-    float v101 = textureLod(volren_volume, vec3(h1.x, h0.y, h1.z), volren_lod).r;
-    float v011 = textureLod(volren_volume, vec3(h0.x, h1.y, h1.z), volren_lod).r;
-    float v111 = textureLod(volren_volume, vec3(h1.x, h1.y, h1.z), volren_lod).r;
+    float v000 = texture(volren_volume, vec3(h0.x, h0.y, h0.z)).r;
+    float v100 = texture(volren_volume, vec3(h1.x, h0.y, h0.z)).r;
+    float v010 = texture(volren_volume, vec3(h0.x, h1.y, h0.z)).r;
+    float v110 = texture(volren_volume, vec3(h1.x, h1.y, h0.z)).r;
+    float v001 = texture(volren_volume, vec3(h0.x, h0.y, h1.z)).r;
+    float v101 = texture(volren_volume, vec3(h1.x, h0.y, h1.z)).r;
+    float v011 = texture(volren_volume, vec3(h0.x, h1.y, h1.z)).r;
+    float v111 = texture(volren_volume, vec3(h1.x, h1.y, h1.z)).r;
     float y0 = g0.x * (g0.y * v000 + g1.y * v010) + g1.x * (g0.y * v100 + g1.y * v110);
     float y1 = g0.x * (g0.y * v001 + g1.y * v011) + g1.x * (g0.y * v101 + g1.y * v111);
     return g0.z * y0 + g1.z * y1;

@@ -1,4 +1,4 @@
-// Level of detail: the mip chain is the average of the voxels each coarse voxel covers, the GPU
+// Level of detail: each mip level is the average of the voxels each coarse voxel covers, the GPU
 // samples the level asked for (closed form), empty-space skipping stays exact at every level,
 // and LOD by distance picks the level from how many voxels a pixel covers.
 #include "AccelerationFixture.h"
@@ -15,12 +15,11 @@
 namespace volren::test {
 namespace {
 
-/// Values of level `level` of `image` (the texture image of mipChainImage) as floats.
-std::vector<float> levelValues(const osg::Image& image, const osg::Vec3i& dims, int level)
+/// Values of a level's image (mipLevelImages) of a float volume.
+std::vector<float> levelValues(const osg::Image& image)
 {
-    const osg::Vec3i d = mipDims(dims, level);
-    std::vector<float> out(std::size_t(d.x()) * d.y() * d.z());
-    std::memcpy(out.data(), image.getMipmapData(unsigned(level)), out.size() * sizeof(float));
+    std::vector<float> out(std::size_t(image.s()) * image.t() * image.r());
+    std::memcpy(out.data(), image.data(), out.size() * sizeof(float));
     return out;
 }
 
@@ -45,9 +44,10 @@ TEST(VolumeMipChain, EachVoxelIsTheOverlapWeightedAverageOfTheVoxelsItCovers)
     auto* v = reinterpret_cast<float*>(volume->data());
     for (std::size_t i = 0; i < volume->voxelCount(); ++i) v[i] = value(random);
     volume->dirty();
-    osg::ref_ptr<osg::Image> image = mipChainImage(*volume);
-    ASSERT_EQ(image->getNumMipmapLevels(), 3u);
-    const std::vector<float> level1 = levelValues(*image, dims, 1);
+    const std::vector<osg::ref_ptr<osg::Image>> levels = mipLevelImages(*volume, 5);
+    ASSERT_EQ(levels.size(), 2u) << "levels 1 and 2: clamped to the chain";
+    ASSERT_EQ(osg::Vec3i(levels[0]->s(), levels[0]->t(), levels[0]->r()), mipDims(dims, 1));
+    const std::vector<float> level1 = levelValues(*levels[0]);
     // Brute force in 3D: weight of level-0 voxel i under level-1 voxel j = product of overlaps.
     auto overlap = [](int i, int j, double r) {
         return std::max(0.0, std::min((j + 1) * r, i + 1.0) - std::max(j * r, double(i)));
@@ -68,7 +68,7 @@ TEST(VolumeMipChain, EachVoxelIsTheOverlapWeightedAverageOfTheVoxelsItCovers)
             }
     double mean = 0.0;
     for (std::size_t i = 0; i < volume->voxelCount(); ++i) mean += v[i];
-    EXPECT_NEAR(levelValues(*image, dims, 2)[0], mean / double(volume->voxelCount()), 1e-4) << "the last level: the mean";
+    EXPECT_NEAR(levelValues(*levels[1])[0], mean / double(volume->voxelCount()), 1e-4) << "the last level: the mean";
 }
 
 TEST(VolumeMipChain, NaNVoxelsAreLeftOutAndIntegersStayWithinTheirVoxels)
@@ -79,7 +79,7 @@ TEST(VolumeMipChain, NaNVoxelsAreLeftOutAndIntegersStayWithinTheirVoxels)
     for (int i = 0; i < 16; ++i) f[i] = std::numeric_limits<float>::quiet_NaN();
     f[2] = 3.0f;  // level-1 voxel x = 1 covers x = 2, 3: one finite value in its box
     floats->dirty();
-    const std::vector<float> level1 = levelValues(*mipChainImage(*floats), {4, 2, 2}, 1);
+    const std::vector<float> level1 = levelValues(*mipLevelImages(*floats, 1).at(0));
     EXPECT_TRUE(std::isnan(level1[0])) << "a box of NaN only";
     EXPECT_EQ(level1[1], 3.0f);
 
@@ -88,9 +88,7 @@ TEST(VolumeMipChain, NaNVoxelsAreLeftOutAndIntegersStayWithinTheirVoxels)
     const std::uint8_t values[8] = {0, 1, 1, 1, 1, 1, 1, 1};  // mean 0.875 -> 1
     std::memcpy(bytes->data(), values, 8);
     bytes->dirty();
-    osg::ref_ptr<osg::Image> image = mipChainImage(*bytes);
-    EXPECT_EQ(image->getMipmapData(1)[0], 1);
-    EXPECT_EQ(std::memcmp(image->data(), values, 8), 0) << "level 0 is the volume";
+    EXPECT_EQ(mipLevelImages(*bytes, 1).at(0)->data()[0], 1);
 }
 
 class LevelOfDetail : public AccelerationFixture

@@ -200,22 +200,23 @@ bool RenderSettings::set(const std::string& key, const std::string& value, std::
                        value + "'",
                false;
     }
-    if (k == "macrocellsize") {
-        if (!parseFiniteNumber(value, v) || v != std::floor(v) || v < 1.0 || v > 1024.0)
-            return error = "macrocellSize must be a whole number of voxels in [1, 1024], got '" + value + "'", false;
-        macrocellSize = int(v);
-        return true;
-    }
-    if (k == "adaptivesteps") {
-        if (!parseFiniteNumber(value, v) || v != std::floor(v) || v < 1.0 || v > 64.0)
-            return error = "adaptiveSteps must be a whole number of steps in [1, 64], got '" + value + "'", false;
-        adaptiveSteps = int(v);
-        return true;
-    }
-    if (k == "lod") {
-        if (!parseFiniteNumber(value, v) || v != std::floor(v) || v < 0.0 || v > 16.0)
-            return error = "lod must be a whole mip level in [0, 16], got '" + value + "'", false;
-        lod = int(v);
+    struct Whole
+    {
+        const char* key;
+        int* field;
+        int lo, hi;
+        const char* unit;
+    };
+    const Whole wholes[] = {{"macrocellsize", &macrocellSize, 1, 1024, "voxels"},
+                            {"adaptivesteps", &adaptiveSteps, 1, 64, "steps"},
+                            {"lod", &lod, 0, 16, "mip levels"}};
+    for (const Whole& w : wholes) {
+        if (k != w.key) continue;
+        if (!parseFiniteNumber(value, v) || v != std::floor(v) || v < w.lo || v > w.hi)
+            return error = key + " must be a whole number of " + w.unit + " in [" + std::to_string(w.lo) + ", " +
+                           std::to_string(w.hi) + "], got '" + value + "'",
+                   false;
+        *w.field = int(v);
         return true;
     }
     if (k == "textureprecision") {

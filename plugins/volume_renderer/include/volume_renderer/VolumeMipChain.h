@@ -3,6 +3,8 @@
 
 #include <osg/Image>
 
+#include <vector>
+
 namespace volren {
 
 /// Voxels along each axis at mip level `level` of a volume of `dims`: halved `level` times,
@@ -15,11 +17,12 @@ int mipLevelCount(const osg::Vec3i& dims);
 /// Level-0 voxels (along the axis where they are most) that one voxel of `level` covers.
 double mipVoxelSpan(const osg::Vec3i& dims, int level);
 
-/// Block (0, 0) of `volume` with its whole mip chain, in the stored voxel type (the texture
-/// image of level-of-detail sampling). Each voxel of level L+1 is the average of the level-L
-/// voxels its box covers, with fractional weights where an odd size halves (so it is a convex
-/// combination of the voxels below it: value ranges of finer levels bound coarser ones); NaN
-/// voxels are left out (NaN where a box holds only NaN); integers are rounded.
-osg::ref_ptr<osg::Image> mipChainImage(const Volume& volume);
+/// Levels 1 .. `levels` of block (0, 0) of `volume`'s mip chain, each an image of its own in
+/// the stored voxel type (the texture a level of detail samples). Each voxel of level L+1 is the
+/// average of the level-L voxels its box covers, with fractional weights where an odd size
+/// halves (so it is a convex combination of the voxels below it: value ranges of finer levels
+/// bound coarser ones); NaN voxels are left out (NaN where a box holds only NaN); integers are
+/// rounded. `levels` is clamped to the chain (mipLevelCount - 1).
+std::vector<osg::ref_ptr<osg::Image>> mipLevelImages(const Volume& volume, int levels);
 
 }  // namespace volren

@@ -14,10 +14,10 @@ GLenum internalFormatFor(VoxelType type);
 GLenum pixelTypeFor(VoxelType type);
 
 /// 3D texture of the volume's voxels at full precision; the image references (does not copy)
-/// the Volume's buffer, so keep the Volume alive as long as the texture. `mipmapped`: with its
-/// whole mip chain (VolumeMipChain.h, a copy), sampled a whole level at a time; `wide`: 8-bit
-/// data in 16-bit texels (the same values; texturePrecision).
-osg::ref_ptr<osg::Texture3D> makeVolumeTexture(const Volume& volume, bool mipmapped = false, bool wide = false);
+/// the Volume's buffer, so keep the Volume alive as long as the texture. `wide`: 8-bit data in
+/// 16-bit texels (the same values; texturePrecision). `level`: instead of the voxels, that image
+/// of a coarser level (VolumeMipChain.h), kept by the texture.
+osg::ref_ptr<osg::Texture3D> makeVolumeTexture(const Volume& volume, bool wide = false, osg::Image* level = nullptr);
 
 /// 3D texture of `image` (kept, not copied) in `internalFormat`, clamped to its edges, with
 /// `filter` for minification and magnification.

@@ -8,15 +8,13 @@
 
 namespace volren::bindings {
 
-const std::vector<UniformDecl> geometry = {
-    {"volren_worldSize", "vec3", ""}, {"volren_dims", "vec3", ""}, {"volren_lod", "float", ""}};
+const std::vector<UniformDecl> geometry = {{"volren_worldSize", "vec3", ""}, {"volren_dims", "vec3", ""}};
 
 void bindGeometry(BindContext& c)
 {
-    const osg::Vec3i d = mipDims(c.volume.dims(), c.lod);  // the voxels of the level sampled
+    const osg::Vec3i d = mipDims(c.volume.dims(), c.lod);  // the voxels of the level sampled (its texture's)
     c.uniform("volren_worldSize", osg::Vec3f(c.boxSize.length2() > 0.0 ? c.boxSize : c.volume.worldSize()));
     c.uniform("volren_dims", osg::Vec3f(float(d.x()), float(d.y()), float(d.z())));
-    c.uniform("volren_lod", float(c.lod));
 }
 
 const std::vector<UniformDecl> window = {{"volren_window", "vec2", ""}, {"volren_tfResolution", "float", ""}};

@@ -88,12 +88,11 @@ void bindProgram(BindContext& context, const ComposedProgram& program,
         return false;
     };
     context.volumeTexture = [&textures, cull](const Volume& v, bool nearest) { return textures.volume(v, nearest, cull); };
-    // With level of detail on, the texture holds the whole mip chain (also while the level is 0).
-    const bool mipmapped = context.settings.lod > 0 || context.settings.lodByDistance;
+    // The texture of the mip level sampled (level of detail), 16-bit where texturePrecision says.
     const std::string& precision = context.settings.texturePrecision;
     const bool wide = precision == "16bit" || (precision == "auto" && context.coarseByteFiltering);
     if (needs(AuxData::VolumeTexture))
-        context.aux[AuxData::VolumeTexture] = textures.volume(context.volume, false, cull, mipmapped, wide);
+        context.aux[AuxData::VolumeTexture] = textures.volume(context.volume, false, cull, context.lod, wide);
     if (needs(AuxData::TransferFunctionTable))
         context.aux[AuxData::TransferFunctionTable] = textures.table(context.transfer, false, cull);
     if (needs(AuxData::PremultipliedTable))

@@ -1,6 +1,9 @@
 #include "TextureCache.h"
 
+#include <volume_renderer/VolumeMipChain.h>
 #include <volume_renderer/VolumeTextures.h>
+
+#include <algorithm>
 
 namespace volren {
 
@@ -18,30 +21,65 @@ void dropStale(Map& map, unsigned int cull)
     for (auto it = map.begin(); it != map.end();) it = stale(it->second.lastCull, cull) ? map.erase(it) : std::next(it);
 }
 
+/// Bytes per texel of the internal formats volren's textures use (their images may hold
+/// narrower data: 8-bit voxels in a 16-bit texture).
+std::size_t texelBytes(GLint format)
+{
+    switch (format) {
+    case GL_R8: case GL_R8_SNORM: return 1;
+    case GL_R16: case GL_R16_SNORM: return 2;
+    case GL_R32F: case GL_RG16F: return 4;
+    case GL_RGBA32F_ARB: return 16;
+    default: return 0;
+    }
+}
+
+/// GPU storage of a texture made from an image: its texels (all mip levels) in the internal
+/// format; the image's own size where the format is not one of the above.
+std::size_t textureBytes(const osg::Texture& texture)
+{
+    const osg::Image* image = texture.getImage(0);
+    if (!image) return 0;
+    const std::size_t perTexel = texelBytes(texture.getInternalFormat());
+    const std::size_t imageTexels = std::size_t(image->s()) * image->t() * image->r();
+    if (perTexel == 0 || imageTexels == 0) return image->getTotalSizeInBytesIncludingMipmaps();
+    // The image's bytes per texel scale to the texture's, level by level alike.
+    return image->getTotalSizeInBytesIncludingMipmaps() / (image->getTotalSizeInBytes() / imageTexels) * perTexel;
+}
+
 template <typename Map>
 std::size_t imageBytes(const Map& map)
 {
     std::size_t bytes = 0;
-    for (const auto& [key, entry] : map)
-        if (const osg::Image* image = entry.texture->getImage()) bytes += image->getTotalSizeInBytesIncludingMipmaps();
+    for (const auto& [key, entry] : map) bytes += textureBytes(*entry.texture);
     return bytes;
 }
 
 }  // namespace
 
-osg::Texture* TextureCache::volume(const Volume& volume, bool nearest, unsigned int cull, bool mipmapped, bool wide)
+osg::Texture* TextureCache::volume(const Volume& volume, bool nearest, unsigned int cull, int level, bool wide)
 {
-    auto& gl = _volumes[{&volume, nearest, mipmapped, wide}];
+    auto& gl = _volumes[{&volume, nearest, level, wide}];
     if (!gl.texture || gl.modified != volume.modifiedCount()) {
         gl.source = &volume;
-        gl.texture = makeVolumeTexture(volume, mipmapped, wide);
+        osg::Image* image = nullptr;
+        if (level > 0) {
+            Levels& levels = _levels[&volume];
+            if (levels.modified != volume.modifiedCount() || int(levels.images.size()) < level) {
+                levels.images = mipLevelImages(volume, level);
+                levels.modified = volume.modifiedCount();
+            }
+            levels.lastCull = cull;
+            image = levels.images.at(std::size_t(std::min<int>(level, int(levels.images.size())) - 1)).get();
+        }
+        gl.texture = makeVolumeTexture(volume, wide, image);
         if (nearest) {
-            gl.texture->setFilter(osg::Texture::MIN_FILTER,
-                                  mipmapped ? osg::Texture::NEAREST_MIPMAP_NEAREST : osg::Texture::NEAREST);
+            gl.texture->setFilter(osg::Texture::MIN_FILTER, osg::Texture::NEAREST);
             gl.texture->setFilter(osg::Texture::MAG_FILTER, osg::Texture::NEAREST);
         }
         gl.modified = volume.modifiedCount();
     }
+    if (level > 0) _levels[&volume].lastCull = cull;
     gl.lastCull = cull;
     return gl.texture.get();
 }
@@ -104,6 +142,8 @@ osg::Texture* TextureCache::ranges(const Volume& volume, int cellSize, int apron
 void TextureCache::endCull(unsigned int cull)
 {
     dropStale(_volumes, cull);
+    for (auto it = _levels.begin(); it != _levels.end();)  // kept for a few hundred frames
+        it = cull - it->second.lastCull > 300 ? _levels.erase(it) : std::next(it);
     dropStale(_tables, cull);
     dropStale(_ranges, cull);
     dropStale(_occupancies, cull);
@@ -119,9 +159,9 @@ std::size_t TextureCache::count() const
 std::size_t TextureCache::bytes() const
 {
     std::size_t occupancy = 0;
-    for (const auto& [key, o] : _occupancies) occupancy += o.texture->getImage()->getTotalSizeInBytes();
+    for (const auto& [key, o] : _occupancies) occupancy += textureBytes(*o.texture);
     for (const auto& [key, r] : _ranges)
-        if (r.texture) occupancy += r.texture->getImage()->getTotalSizeInBytes();
+        if (r.texture) occupancy += textureBytes(*r.texture);
     return imageBytes(_volumes) + imageBytes(_tables) + occupancy;
 }
 

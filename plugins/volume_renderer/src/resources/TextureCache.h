@@ -22,9 +22,9 @@ namespace volren {
 class TextureCache
 {
 public:
-    /// The 3D texture of `volume` (nearest-voxel filtering when `nearest`; with its mip chain
-    /// when `mipmapped`; 8-bit data as 16-bit texels when `wide`), used in cull `cull`.
-    osg::Texture* volume(const Volume& volume, bool nearest, unsigned int cull, bool mipmapped = false, bool wide = false);
+    /// The 3D texture of `volume` (nearest-voxel filtering when `nearest`; mip level `level` of it,
+    /// a texture of its own; 8-bit data as 16-bit texels when `wide`), used in cull `cull`.
+    osg::Texture* volume(const Volume& volume, bool nearest, unsigned int cull, int level = 0, bool wide = false);
     /// The 1D table of `transfer` (associated colours when `premultiplied`), used in cull `cull`.
     osg::Texture* table(const TransferFunction& transfer, bool premultiplied, unsigned int cull);
     /// What decides a cell's occupancy texel under one classification (MacrocellGrid.h's occupancyOf).
@@ -56,7 +56,16 @@ private:
         unsigned int modified = 0;
         unsigned int lastCull = 0;
     };
-    std::map<std::tuple<const Volume*, bool, bool, bool>, Entry<Volume, osg::Texture3D>> _volumes;
+    std::map<std::tuple<const Volume*, bool, int, bool>, Entry<Volume, osg::Texture3D>> _volumes;
+    /// The coarser levels' images of a volume (VolumeMipChain.h), kept longer than their textures
+    /// so that switching levels (volren view while dragging) uploads and does not rebuild.
+    struct Levels
+    {
+        std::vector<osg::ref_ptr<osg::Image>> images;  ///< levels 1, 2, ...
+        unsigned int modified = 0;
+        unsigned int lastCull = 0;
+    };
+    std::map<const Volume*, Levels> _levels;
     std::map<std::pair<const TransferFunction*, bool>, Entry<TransferFunction, osg::Texture1D>> _tables;
     struct Ranges
     {

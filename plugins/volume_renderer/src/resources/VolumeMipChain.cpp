@@ -1,4 +1,4 @@
-// A volume's mip chain, built on the CPU in separable passes (x, then y, then z per level), so
+// A volume's mip levels, built on the CPU in separable passes (x, then y, then z per level), so
 // NaN voxels and odd sizes follow one rule on every driver.
 #include <volume_renderer/VolumeMipChain.h>
 #include <volume_renderer/VolumeTextures.h>
@@ -107,35 +107,27 @@ void storeAs(VoxelType type, const std::vector<float>& values, std::uint8_t* out
 
 }  // namespace
 
-osg::ref_ptr<osg::Image> mipChainImage(const Volume& volume)
+std::vector<osg::ref_ptr<osg::Image>> mipLevelImages(const Volume& volume, int levels)
 {
     const osg::Vec3i d0 = volume.dims();
-    const int levels = mipLevelCount(d0);
+    levels = std::clamp(levels, 0, mipLevelCount(d0) - 1);
     const std::size_t voxelBytes = volume.byteSize() / volume.totalVoxelCount();
-    std::vector<std::size_t> offsets(std::size_t(levels), 0);
-    std::size_t total = 0;
-    for (int l = 0; l < levels; ++l) {
-        offsets[std::size_t(l)] = total;
-        const osg::Vec3i d = mipDims(d0, l);
-        total += std::size_t(d.x()) * d.y() * d.z() * voxelBytes;
-    }
-    auto* data = new unsigned char[total];
-    std::memcpy(data, volume.data(), volume.voxelCount() * voxelBytes);
+    std::vector<osg::ref_ptr<osg::Image>> out;
+    if (levels == 0) return out;
     Level level{d0, std::vector<float>(volume.voxelCount())};
     for (std::size_t i = 0; i < level.values.size(); ++i) level.values[i] = float(volume.storedValue(i));
-    for (int l = 1; l < levels; ++l) {
+    for (int l = 1; l <= levels; ++l) {
         const osg::Vec3i d = mipDims(d0, l);
         for (int axis = 0; axis < 3; ++axis)
             if (level.dims[axis] != d[axis]) level = reduce(level, axis, d[axis]);
-        storeAs(volume.type(), level.values, data + offsets[std::size_t(l)]);
+        auto* data = new unsigned char[level.values.size() * voxelBytes];
+        storeAs(volume.type(), level.values, data);
+        osg::ref_ptr<osg::Image> image = new osg::Image;
+        image->setImage(d.x(), d.y(), d.z(), internalFormatFor(volume.type()), GL_RED, pixelTypeFor(volume.type()), data,
+                        osg::Image::USE_NEW_DELETE, 1);
+        out.push_back(image);
     }
-    osg::ref_ptr<osg::Image> image = new osg::Image;
-    image->setImage(d0.x(), d0.y(), d0.z(), internalFormatFor(volume.type()), GL_RED, pixelTypeFor(volume.type()), data,
-                    osg::Image::USE_NEW_DELETE, 1);
-    osg::Image::MipmapDataType mipmaps;
-    for (int l = 1; l < levels; ++l) mipmaps.push_back(static_cast<unsigned int>(offsets[std::size_t(l)]));
-    image->setMipmapLevels(mipmaps);
-    return image;
+    return out;
 }
 
 }  // namespace volren

@@ -1,4 +1,3 @@
-#include <volume_renderer/VolumeMipChain.h>
 #include <volume_renderer/VolumeTextures.h>
 
 #include <osg/Image>
@@ -29,17 +28,15 @@ GLenum internalFormatFor(VoxelType type)
     return GL_R8;
 }
 
-osg::ref_ptr<osg::Texture3D> makeVolumeTexture(const Volume& volume, bool mipmapped, bool wide)
+osg::ref_ptr<osg::Texture3D> makeVolumeTexture(const Volume& volume, bool wide, osg::Image* level)
 {
     // 8-bit data as 16-bit texels: GL converts on upload, v / 255 becomes v * 257 / 65535, the same value.
     const GLenum format = !wide ? internalFormatFor(volume.type())
                           : volume.type() == VoxelType::UInt8 ? GLenum(GL_R16)
                           : volume.type() == VoxelType::Int8  ? GLenum(GL_R16_SNORM)
                                                               : internalFormatFor(volume.type());
-    osg::ref_ptr<osg::Image> image;
-    if (mipmapped) {
-        image = mipChainImage(volume);
-    } else {
+    osg::ref_ptr<osg::Image> image = level;
+    if (!image) {
         image = new osg::Image;
         const osg::Vec3i& d = volume.dims();
         image->setImage(d.x(), d.y(), d.z(), format, GL_RED, pixelTypeFor(volume.type()),
@@ -47,7 +44,6 @@ osg::ref_ptr<osg::Texture3D> makeVolumeTexture(const Volume& volume, bool mipmap
     }
     image->setInternalTextureFormat(format);
     osg::ref_ptr<osg::Texture3D> texture = makeTexture3D(image.get(), format, osg::Texture::LINEAR);
-    if (mipmapped) texture->setFilter(osg::Texture::MIN_FILTER, osg::Texture::LINEAR_MIPMAP_NEAREST);  // whole levels
     texture->setName(volume.getName());
     return texture;
 }
