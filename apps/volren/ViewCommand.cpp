@@ -18,6 +18,7 @@
 #include <osgViewer/ViewerEventHandlers>
 
 #include <algorithm>
+#include <cctype>
 #include <cstdlib>
 #include <iostream>
 
@@ -74,8 +75,11 @@ int viewCommand(const std::vector<std::string>& args)
     osg::ref_ptr<VolumeScene> root = loadScene(options);
     // Interactive views sample far volumes coarser (and keep the mip chain the interaction
     // quality's coarser level needs), unless --set says otherwise.
-    const bool lodSet = std::any_of(options.settings.begin(), options.settings.end(),
-                                    [](const auto& kv) { return kv.first == "lodByDistance"; });
+    const bool lodSet = std::any_of(options.settings.begin(), options.settings.end(), [](const auto& kv) {
+        std::string key = kv.first;  // setting keys are case-insensitive
+        std::transform(key.begin(), key.end(), key.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+        return key == "lodbydistance";
+    });
     if (!lodSet)
         for (VolumeNode* n : findVolumeNodes(*root)) n->settings.lodByDistance = true;
     if (options.samples > 1) osg::DisplaySettings::instance()->setNumMultiSamples(options.samples);  // an MSAA window

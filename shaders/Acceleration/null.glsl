@@ -2,7 +2,7 @@
 // (asked once per ray).
 // float volren_skip(vec3 origin, vec3 dir, float t, float tFar, out float tRecheck)
 // float volren_skip(vec3 origin, vec3 dir, float t, float tFar, float level, bool above, out float tRecheck)
-// int volren_stepsPerSample(vec3 origin, vec3 dir, float t, out float tEnd)
+// int volren_stepsPerSample(...): Acceleration/every_step.glsl
 float volren_skip(vec3 origin, vec3 dir, float t, float tFar, out float tRecheck)
 {
     tRecheck = 1e30;
@@ -13,10 +13,4 @@ float volren_skip(vec3 origin, vec3 dir, float t, float tFar, float level, bool 
 {
     tRecheck = 1e30;
     return t;
-}
-
-int volren_stepsPerSample(vec3 origin, vec3 dir, float t, out float tEnd)
-{
-    tEnd = 1e30;
-    return 1;
 }

@@ -7,7 +7,7 @@
 // exit, one cell per pass of the traversal's own loop: the extremum or the first hit, and so the
 // image, is the one without skipping.
 // float volren_skip(vec3 origin, vec3 dir, float t, float tFar, float level, bool above, out float tRecheck)
-// int volren_stepsPerSample(vec3 origin, vec3 dir, float t, out float tEnd)
+// int volren_stepsPerSample(...): Acceleration/every_step.glsl
 float volren_skip(vec3 origin, vec3 dir, float t, float tFar, float level, bool above, out float tRecheck)
 {
     ivec3 count = ivec3(volren_cellCount);
@@ -21,11 +21,4 @@ float volren_skip(vec3 origin, vec3 dir, float t, float tFar, float level, bool 
     tRecheck = coarseDone ? volren_cellExit(origin, dir, t, vec3(coarse * factor), float(factor))
                           : volren_cellExit(origin, dir, t, vec3(cell), 1.0);
     return done ? tRecheck : t;
-}
-
-// MIP and MinIP take every step they sample (no adaptive steps).
-int volren_stepsPerSample(vec3 origin, vec3 dir, float t, out float tEnd)
-{
-    tEnd = 1e30;
-    return 1;
 }

@@ -37,7 +37,7 @@ vec4 volren_traverse(vec3 origin, vec3 dir, float tNear, float tFar, float jitte
                 steps = volren_stepsPerSample(origin, -dir, -tMid, reversedEnd);
                 tRunStart = -reversedEnd;
             }
-            int first = max(max(i - steps, -1) + 1, volren_segmentStartingFrom(m, tRunStart));
+            int first = steps > 1 ? max(max(i - steps, -1) + 1, volren_segmentStartingFrom(m, tRunStart)) : i;
             if (first < i) {
                 segStart = volren_segmentStart(m, first, tNear, tFar);
                 lenT = segEnd - segStart;

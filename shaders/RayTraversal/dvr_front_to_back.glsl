@@ -32,7 +32,7 @@ vec4 volren_traverse(vec3 origin, vec3 dir, float tNear, float tFar, float jitte
         }
         if (visible) {  // adaptive sampling: one sample for a run of steps where the medium is homogeneous
             if (tMid >= tRunEnd) steps = volren_stepsPerSample(origin, dir, tMid, tRunEnd);
-            int last = min(min(i + steps, m.count) - 1, volren_segmentEndingBy(m, tRunEnd));
+            int last = steps > 1 ? min(min(i + steps, m.count) - 1, volren_segmentEndingBy(m, tRunEnd)) : i;
             if (last > i) {
                 segEnd = volren_segmentEnd(m, last, tFar);
                 lenT = segEnd - segStart;

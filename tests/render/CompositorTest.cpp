@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -56,9 +57,10 @@ TEST(Compositor, ComposedSourceHoldsEachChosenFileOnceWithLineMarkers)
     const std::string decl = "uniform vec3 volren_worldSize;";
     EXPECT_NE(src.find(decl), std::string::npos);
     EXPECT_EQ(src.find(decl), src.rfind(decl));
-    // header, numerics, slots.glsl, the traversal's march.glsl and the ray setup's ray.glsl
-    // includes, one per slot
-    ASSERT_EQ(p->sourceNames.size(), 5u + slots().size());
+    // header, numerics, slots.glsl, the traversal's march.glsl, the ray setup's ray.glsl and the
+    // null Acceleration's every_step.glsl includes, one per slot
+    ASSERT_EQ(p->sourceNames.size(), 6u + slots().size());
+    EXPECT_EQ(std::count(p->sourceNames.begin(), p->sourceNames.end(), "Acceleration/every_step.glsl"), 1);
     EXPECT_EQ(p->sourceNames[p->sourceNames.size() - 2], "RaySetup/ray.glsl");
     EXPECT_EQ(p->sourceNames.back(), "RaySetup/box_intersection.glsl");
     EXPECT_EQ(p->textureUnits.at("volren_volume"), 0);

@@ -26,12 +26,16 @@ void bindCells(BindContext& c)
     c.uniform("volren_coarseFactor", float(occupancyCoarseFactor));
 }
 
-/// A skipping over a macrocell grid texture `sampler` made from `aux`, leaping by `skips`.
-ShaderFunction gridSkipping(const std::string& name, const std::string& sampler, AuxData aux, const std::string& skips)
+/// A skipping over a macrocell grid texture `sampler` made from `aux`, leaping by `skips`, with
+/// `includes` after the cell geometry (the leap, the steps per sample).
+ShaderFunction gridSkipping(const std::string& name, const std::string& sampler, AuxData aux, const std::string& skips,
+                            const std::vector<std::string>& includes)
 {
+    std::vector<std::string> files = {"Acceleration/cells.glsl"};
+    files.insert(files.end(), includes.begin(), includes.end());
     return {.slot = "Acceleration",
             .name = name,
-            .includes = {"Acceleration/cells.glsl"},
+            .includes = files,
             .uniforms = cellUniforms,
             .textures = {{sampler, "sampler3D"}},
             .needs = {aux},
@@ -47,25 +51,27 @@ ShaderFunction gridSkipping(const std::string& name, const std::string& sampler,
 
 void registerAccelerationFunctions(ShaderFunctionRegistry& registry)
 {
-    registry.add({.slot = "Acceleration", .name = "null", .traits = {.calls = SlotList{}}});
+    registry.add({.slot = "Acceleration",
+                  .name = "null",
+                  .includes = {"Acceleration/every_step.glsl"},
+                  .traits = {.calls = SlotList{}}});
 
     // The pass builds the grids from the volume's macrocell value ranges with the
     // Reconstruction's footprint as apron (and, for opacity, the Classification's CPU mirror).
-    ShaderFunction occupancy = gridSkipping("occupancy", "volren_occupancy", AuxData::OccupancyGrid, "opacity");
-    occupancy.includes.push_back("Acceleration/occupancy_leap.glsl");
-    registry.add(occupancy);
-    registry.add(gridSkipping("range", "volren_cellRanges", AuxData::MacrocellRanges, "extremum"));
+    registry.add(gridSkipping("occupancy", "volren_occupancy", AuxData::OccupancyGrid, "opacity",
+                              {"Acceleration/occupancy_leap.glsl", "Acceleration/every_step.glsl"}));
+    registry.add(gridSkipping("range", "volren_cellRanges", AuxData::MacrocellRanges, "extremum",
+                              {"Acceleration/every_step.glsl"}));
 
     // Skipping as occupancy, and in cells where the classification stays within the node's
     // adaptiveTolerance (the Classification's variation mirror) one sample for up to
     // adaptiveSteps steps.
-    ShaderFunction adaptive = gridSkipping("adaptive", "volren_occupancy", AuxData::HomogeneityGrid, "opacity");
-    adaptive.includes.push_back("Acceleration/occupancy_leap.glsl");
+    ShaderFunction adaptive = gridSkipping("adaptive", "volren_occupancy", AuxData::HomogeneityGrid, "opacity",
+                                           {"Acceleration/occupancy_leap.glsl"});
     adaptive.uniforms.push_back({"volren_adaptiveSteps", "int", ""});
     adaptive.traits.approximates = true;
-    adaptive.bind = [](BindContext& c) {
-        bindCells(c);
-        c.texture("volren_occupancy", c.aux.at(AuxData::HomogeneityGrid).get());
+    adaptive.bind = [grid = adaptive.bind](BindContext& c) {
+        grid(c);
         c.uniform("volren_adaptiveSteps", c.settings.adaptiveSteps);
     };
     registry.add(adaptive);

@@ -23,14 +23,25 @@ double largestWindowed(const BindContext& c, double lo, double hi)
     return std::max(lo * scale + offset, hi * scale + offset);
 }
 
-/// The table entries linear filtering may mix for window values in [u0, u1] (clamped), with one
-/// more on each side for float rounding; false when the range is NaN (no bound).
-bool entriesOf(double u0, double u1, double last, int& a, int& b)
+/// The window values u0 <= u1 of texel values [lo, hi] under u = v * scale + offset, clamped
+/// to [0, 1] as the GLSL clamps them; false when the map gives NaN (no bound).
+bool windowedRange(double scale, double offset, double lo, double hi, double& u0, double& u1)
 {
+    u0 = lo * scale + offset;
+    u1 = hi * scale + offset;
     if (std::isnan(u0) || std::isnan(u1)) return false;
     if (u0 > u1) std::swap(u0, u1);
     u0 = std::clamp(u0, 0.0, 1.0);
     u1 = std::clamp(u1, 0.0, 1.0);
+    return true;
+}
+
+/// The table entries linear filtering may mix for texel values [lo, hi], with one more on each
+/// side for float rounding; false when the range is NaN (no bound).
+bool entriesOf(double scale, double offset, double lo, double hi, double last, int& a, int& b)
+{
+    double u0 = 0.0, u1 = 0.0;
+    if (!windowedRange(scale, offset, lo, hi, u0, u1)) return false;
     a = std::max(0, int(std::floor(u0 * last)) - 1);
     b = std::min(int(last), int(std::ceil(u1 * last)) + 1);
     return true;
@@ -47,7 +58,7 @@ std::function<bool(double, double)> tableMirror(const BindContext& c)
     const double last = double(table.size()) - 1.0;
     return [scale, offset, opaqueBefore = std::move(opaqueBefore), last](double lo, double hi) {
         int a = 0, b = 0;
-        if (!entriesOf(lo * scale + offset, hi * scale + offset, last, a, b)) return true;
+        if (!entriesOf(scale, offset, lo, hi, last, a, b)) return true;
         return opaqueBefore[std::size_t(b) + 1] > opaqueBefore[std::size_t(a)];
     };
 }
@@ -84,7 +95,7 @@ std::function<double(double, double)> tableVariation(const BindContext& c)
     const double last = double(n) - 1.0;
     return [scale, offset, levels = std::move(levels), last](double lo, double hi) {
         int a = 0, b = 0;
-        if (!entriesOf(lo * scale + offset, hi * scale + offset, last, a, b)) return 1.0;
+        if (!entriesOf(scale, offset, lo, hi, last, a, b)) return 1.0;
         const std::size_t count = std::size_t(b - a + 1);
         std::size_t k = 0;
         while ((std::size_t(2) << k) <= count) ++k;
@@ -120,11 +131,8 @@ void registerClassificationFunctions(ShaderFunctionRegistry& registry)
                   .variation = [](const BindContext& c) -> std::function<double(double, double)> {
                       const auto [scale, offset] = bindings::windowMap(c);
                       return [scale, offset](double lo, double hi) {  // opacity u, colour u: u^2 weighted
-                          double u0 = lo * scale + offset, u1 = hi * scale + offset;
-                          if (std::isnan(u0) || std::isnan(u1)) return 1.0;
-                          if (u0 > u1) std::swap(u0, u1);
-                          u0 = std::clamp(u0, 0.0, 1.0);
-                          u1 = std::clamp(u1, 0.0, 1.0);
+                          double u0 = 0.0, u1 = 0.0;
+                          if (!windowedRange(scale, offset, lo, hi, u0, u1)) return 1.0;
                           return std::max(u1 - u0, u1 * u1 - u0 * u0) + 1e-6;
                       };
                   }});

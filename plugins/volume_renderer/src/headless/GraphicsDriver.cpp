@@ -1,5 +1,6 @@
 #include <volume_renderer/GraphicsDriver.h>
 
+#include <atomic>
 #include <mutex>
 
 namespace volren {
@@ -8,6 +9,7 @@ namespace {
 
 std::mutex driverMutex;
 std::string driverName;
+std::atomic<bool> coarseBytes{false};  ///< decided when recorded: asked every cull
 
 }  // namespace
 
@@ -15,6 +17,7 @@ void recordGraphicsDriver(const std::string& renderer)
 {
     std::lock_guard<std::mutex> lock(driverMutex);
     driverName = renderer;
+    coarseBytes = renderer.find("llvmpipe") != std::string::npos || renderer.find("softpipe") != std::string::npos;
 }
 
 std::string graphicsDriver()
@@ -25,8 +28,7 @@ std::string graphicsDriver()
 
 bool filtersBytesCoarsely()
 {
-    const std::string name = graphicsDriver();
-    return name.find("llvmpipe") != std::string::npos || name.find("softpipe") != std::string::npos;
+    return coarseBytes;
 }
 
 }  // namespace volren
