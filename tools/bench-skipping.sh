@@ -30,10 +30,11 @@ for input in ct/bonsai.nii.gz ct/CT_AVM.nii.gz dicom/pancreas_ct_subset; do
     args=()  # the sparse and empty TFs, or a traversal with the dense (default) TF
     case "$kind" in
       sparse | empty) args=(--tf "$work/$kind.tf") ;;
-      mip | minip | isosurface) args=(--set "traversal=$kind") ;;
+      mip) args=(--set traversal=mip --set acceleration=range) ;;  # MIP leaps only when asked
+      minip | isosurface) args=(--set "traversal=$kind") ;;
     esac
     for r in $(seq "$rounds"); do
-      for run in on off; do  # on: the default skipping (occupancy or range), off: acceleration=null
+      for run in on off; do  # on: skipping (occupancy or range), off: acceleration=null (the later --set wins)
         skip=()
         [ "$run" = off ] && skip=(--set acceleration=null)
         "$volren" render "$path" -o "$work/$run.exr" --size "${size}x${size}" --frames 4 "${args[@]}" "${skip[@]}" \

@@ -209,7 +209,13 @@ TEST_F(EmptySpaceSkipping, ATransferFunctionThatHidesEverythingRendersExactlyThe
     osg::ref_ptr<VolumeScene> scene = sceneOf(node.get());
     const Pixels image = oblique(scene.get());
     EXPECT_EQ(chosenAcceleration(scene.get()), "occupancy");
+    EXPECT_EQ(scene->hiddenVolumeCount(), 1u) << "a volume that cannot show anything is not drawn";
     for (const osg::Vec4& c : image.rgba) ASSERT_EQ(c, osg::Vec4(0.1f, 0.2f, 0.3f, 0.0f));
+    // A TF edit that shows the values from 254 on draws it again.
+    tf->assign(*transferFunction({{0, {0, 0, 0, 0}}, {254, {0, 0, 0, 0}}, {255, {1, 1, 1, 1}}}, 0, 255));
+    const Pixels one = oblique(scene.get());
+    EXPECT_EQ(scene->hiddenVolumeCount(), 0u);
+    EXPECT_GT(covered(one), 0);
 }
 
 TEST_F(EmptySpaceSkipping, TransferFunctionEditsBetweenFramesNeverShowStaleOccupancy)
@@ -295,6 +301,7 @@ TEST_F(EmptySpaceSkipping, ProjectionsAndIsosurfacesLeapWhatCannotPassTheirLevel
             for (int size : {2, 8}) {
                 node->settings.functions["RayTraversal"] = traversal;
                 node->settings.functions["Reconstruction"] = reconstruction;
+                node->settings.functions["Acceleration"] = "range";  // MIP leaps only when asked
                 node->settings.macrocellSize = size;
                 const auto [skipping, full] = withAndWithout(node.get(), scene.get(), [&] { return oblique(scene.get()); }, "range");
                 EXPECT_TRUE(identical(skipping, full)) << traversal << " " << reconstruction << " cells of " << size
@@ -320,6 +327,8 @@ TEST_F(EmptySpaceSkipping, ARealCtWithASparseTransferFunctionIsBitIdentical)
     for (const char* traversal : {"dvr_front_to_back", "dvr_back_to_front", "mip", "minip", "isosurface"}) {
         node->settings.functions["RayTraversal"] = traversal;
         const bool extremum = std::string(traversal).find("dvr") != 0;
+        if (extremum) node->settings.functions["Acceleration"] = "range";  // MIP leaps only when asked
+        else node->settings.functions.erase("Acceleration");
         const auto [skipping, full] = withAndWithout(node.get(), scene.get(), [&] {
             const osg::Vec3d centre = bound.center();
             const osg::Matrixd v = osg::Matrixd::lookAt(centre + osg::Vec3d(1.2, -2.0, 1.0) * bound.radius(), centre,
@@ -381,6 +390,21 @@ TEST_F(EmptySpaceSkipping, AMultiVolumeSetLeapsOnlyWhereEveryMemberIsEmpty)
                                                    << eye.z() << ": max difference " << maxDifference(skipping, full);
             EXPECT_GT(covered(skipping), 40);
         }
+    // A member whose TF hides everything keeps the set drawn for the other; when both hide
+    // everything the set is not drawn at all.
+    both(true);
+    osg::ref_ptr<TransferFunction> none = constantTransferFunction({1, 1, 1, 0});
+    a->setTransferFunction(none.get());
+    const Pixels oneHidden = oblique(scene.get());
+    EXPECT_EQ(scene->hiddenVolumeCount(), 0u);
+    both(false);
+    EXPECT_TRUE(identical(oneHidden, oblique(scene.get())));
+    EXPECT_GT(covered(oneHidden), 40);
+    both(true);
+    b->setTransferFunction(none.get());
+    const Pixels bothHidden = oblique(scene.get());
+    EXPECT_EQ(scene->hiddenVolumeCount(), 1u);
+    for (const osg::Vec4& c : bothHidden.rgba) ASSERT_EQ(c, osg::Vec4(0.1f, 0.2f, 0.3f, 0.0f));
 }
 
 }  // namespace

@@ -71,6 +71,10 @@ struct ImplementationTraits
     /// running maximum or minimum (MIP, MinIP; the volren_skip overload with a level). Both need
     /// a Reconstruction with a footprint. Empty: none (an Acceleration with none leaps nowhere).
     std::string skips = {};
+    /// RayTraversal: the policy gives it skipping unasked. False where the bench measured the
+    /// leaps' queries costing more than they save on the shared CTs (MIP: the running maximum
+    /// rarely rules a cell out before the brightest structure is met); `acceleration=range` asks.
+    bool skipsByDefault = true;
     /// Acceleration: it changes the image, within a bound it states (adaptive steps), so the
     /// policy never chooses it unless asked; skipping alone is exact.
     bool approximates = false;

@@ -57,6 +57,9 @@ public:
     /// Bytes of GL texture storage this scene holds (volumes, tables, screen textures): what the
     /// renderer allocates on the GPU besides the framebuffer.
     std::size_t textureBytes() const;
+    /// Volumes and multi-volume sets the last cull traversal left undrawn because their occupancy
+    /// grids show that no sample of theirs can be visible (a TF that hides everything).
+    std::size_t hiddenVolumeCount() const;
 
 protected:
     ~VolumeScene() override;

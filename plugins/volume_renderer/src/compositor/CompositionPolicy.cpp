@@ -137,7 +137,7 @@ bool CompositionPolicy::skippingFits(const Composition& c, const ShaderFunction&
     const ShaderFunction* classification = _registry.find("Classification", c.functionFor("Classification"));
     const ShaderFunction* reconstruction = _registry.find("Reconstruction", c.functionFor("Reconstruction"));
     if (!marcher || !classification || !reconstruction || !marcher->traits.calls || !marcher->mayCall("Acceleration") ||
-        acceleration.traits.skips.empty() || acceleration.traits.approximates)
+        !marcher->traits.skipsByDefault || acceleration.traits.skips.empty() || acceleration.traits.approximates)
         return false;
     return skippingMismatch(acceleration, *marcher, *classification, *reconstruction).empty();
 }

@@ -83,6 +83,7 @@ void registerRayTraversalFunctions(ShaderFunctionRegistry& registry)
         ShaderFunction extremum = traversal(name, {"Reconstruction", "Classification", "ClipPosition", "Acceleration"});
         extremum.includes.push_back("RayTraversal/extremum.glsl");
         extremum.traits.skips = "extremum";
+        extremum.traits.skipsByDefault = std::string(name) == "minip";  // docs/bench/skipping.md
         registry.add(extremum);
     }
     registry.add(traversal("average", projecting));

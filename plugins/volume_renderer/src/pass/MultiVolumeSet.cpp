@@ -50,6 +50,7 @@ void updateSetProxy(VolumeProxy& proxy, std::vector<SetMember>& members, const C
                            .textureUnits = program->textureUnits,
                            .boxSize = size};  // the set's box, step and termination
     bindProgram(setContext, *program, set.clips, -1, textures, cull);
+    proxy.hidden = true;  // until a member may show something
     for (std::size_t k = 0; k < members.size(); ++k) {
         const VolumeCandidate& c = *members[k].candidate;
         const Volume& volume = *c.node->getVolume();
@@ -58,7 +59,7 @@ void updateSetProxy(VolumeProxy& proxy, std::vector<SetMember>& members, const C
         context.lights = c.offer.lights;
         context.member = "_v" + std::to_string(k);
         context.setToMember = setTextureToScene * osg::Matrixd::inverse(memberTextureToScene);
-        bindProgram(context, *program, parts[k].clips, int(k), textures, cull);
+        if (bindProgram(context, *program, parts[k].clips, int(k), textures, cull)) proxy.hidden = false;
     }
 }
 

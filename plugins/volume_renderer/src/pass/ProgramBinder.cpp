@@ -39,7 +39,7 @@ int footprintOf(const std::vector<const Binding*>& bindings)
 /// there (none is homogeneous for a Classification without a variation mirror or a volume with
 /// NaN voxels, whose interpolated samples turn transparent).
 osg::Texture* occupancyFor(const BindContext& context, const std::vector<const Binding*>& bindings,
-                           TextureCache& textures, unsigned int cull, bool homogeneity)
+                           TextureCache& textures, unsigned int cull, bool homogeneity, bool& anyVisible)
 {
     const ShaderFunction* classification = nullptr;
     for (const Binding* b : bindings)
@@ -70,12 +70,12 @@ osg::Texture* occupancyFor(const BindContext& context, const std::vector<const B
                 homogeneous = [](double, double) { return false; };
             return {classification->mayShow(context), homogeneous};
         },
-        cull);
+        cull, anyVisible);
 }
 
 }  // namespace
 
-void bindProgram(BindContext& context, const ComposedProgram& program,
+bool bindProgram(BindContext& context, const ComposedProgram& program,
                  const std::map<std::string, std::vector<ClipInfo>>& clips, int member, TextureCache& textures,
                  unsigned int cull)
 {
@@ -99,10 +99,11 @@ void bindProgram(BindContext& context, const ComposedProgram& program,
         context.aux[AuxData::PremultipliedTable] = textures.table(context.transfer, true, cull);
     for (const Binding* b : mine)
         if (b->instance < 0) context.chosen[b->function->slot] = b->function->name;
+    bool anyVisible = true;
     if (needs(AuxData::OccupancyGrid))
-        context.aux[AuxData::OccupancyGrid] = occupancyFor(context, mine, textures, cull, false);
+        context.aux[AuxData::OccupancyGrid] = occupancyFor(context, mine, textures, cull, false, anyVisible);
     if (needs(AuxData::HomogeneityGrid))
-        context.aux[AuxData::HomogeneityGrid] = occupancyFor(context, mine, textures, cull, true);
+        context.aux[AuxData::HomogeneityGrid] = occupancyFor(context, mine, textures, cull, true, anyVisible);
     if (needs(AuxData::MacrocellRanges)) {
         const GridShape shape =
             gridShapeFor(context.volume.dims(), context.settings.macrocellSize, footprintOf(mine), context.lod);
@@ -118,6 +119,7 @@ void bindProgram(BindContext& context, const ComposedProgram& program,
         context.clips = it == clips.end() ? none : it->second;
         b->function->bind(context);
     }
+    return anyVisible;
 }
 
 }  // namespace volren

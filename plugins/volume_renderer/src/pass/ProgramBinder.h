@@ -21,8 +21,9 @@ BindContext bindContextFor(const VolumeCandidate& candidate, osg::StateSet& stat
 /// Binds the implementations of `program` that belong to `member` (-1: a single volume, or a
 /// set's own) into `context`: first the auxiliary data they ask for (only that), then each
 /// implementation's bind, template instances with their clip from `clips` (slot -> one per
-/// instance). Textures come from `textures`, marked used in cull `cull`.
-void bindProgram(BindContext& context, const ComposedProgram& program,
+/// instance). Textures come from `textures`, marked used in cull `cull`. Returns false when a
+/// bound occupancy grid shows that no sample of the member can be visible (nothing to draw).
+bool bindProgram(BindContext& context, const ComposedProgram& program,
                  const std::map<std::string, std::vector<ClipInfo>>& clips, int member, TextureCache& textures,
                  unsigned int cull);
 

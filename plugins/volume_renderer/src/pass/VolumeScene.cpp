@@ -42,13 +42,14 @@ void VolumeScene::Pass::draw(osgUtil::CullVisitor& cv, VolumeProxy& proxy, const
                              const VolumeNode* node, std::set<std::string>& keys)
 {
     proxy.lastCull = cull;
+    keys.insert(proxy.key);
+    if (proxy.hidden) return;  // exactly what drawing it would show: nothing
     // A core profile needs buffer objects and a vertex array object. A compatibility context
     // gets plain client arrays, as OSG 3.6 mishandles both there: display-list models drawn
     // after a VAO drawable vanish from the next frame on. OSG's attribute aliasing, which a core
     // profile needs, tells the two apart.
     proxy.useVertexArrayObject(cv.getState() && cv.getState()->getUseVertexAttributeAliasing());
     proxy.transform->setMatrix(matrix);
-    keys.insert(proxy.key);
     int pushed = 0;
     if (proxy.program->needs(AuxData::DepthTexture)) {
         cv.pushStateSet(screen.depthState(cv, proxy.program->textureUnits.at("volren_depthTexture")));
@@ -71,7 +72,7 @@ VolumeProxy& VolumeScene::Pass::update(const VolumeCandidate& c, const ChosenCom
     BindContext context = bindContextFor(c, ss, *program);
     context.lights = c.offer.lights;
     context.writesDepth = program->writesDepth;
-    bindProgram(context, *program, chosen.clips, -1, textures, cull);
+    proxy.hidden = !bindProgram(context, *program, chosen.clips, -1, textures, cull);
     return proxy;
 }
 
@@ -164,6 +165,15 @@ std::vector<std::string> VolumeScene::compositionKeys() const
     return _state->lastKeys;
 }
 
+std::size_t VolumeScene::hiddenVolumeCount() const
+{
+    std::lock_guard<std::mutex> lock(_mutex);
+    std::size_t n = 0;
+    for (const auto& entry : _state->proxies) n += entry.second.lastCull == _state->cull && entry.second.hidden;
+    for (const auto& entry : _state->sets) n += entry.second.lastCull == _state->cull && entry.second.hidden;
+    return n;
+}
+
 std::vector<std::pair<std::string, std::shared_ptr<const ComposedProgram>>> VolumeScene::programs() const
 {
     std::lock_guard<std::mutex> lock(_mutex);
@@ -200,7 +210,7 @@ void VolumeScene::checkPrograms(osg::State& state) const
     for (const VolumeProxy* proxy : all) {
         // Only what the last cull drew: another viewer of the same scene (a second context) has
         // not applied the programs of proxies it did not draw.
-        if (!proxy->program || proxy->lastCull != _state->cull) continue;
+        if (!proxy->program || proxy->lastCull != _state->cull || proxy->hidden) continue;  // hidden: never applied
         const osg::Program* program = proxy->program->program.get();
         osg::Program::PerContextProgram* pcp = program->getPCP(state);
         if (!pcp || pcp->isLinked()) continue;

@@ -98,7 +98,7 @@ osg::Texture* TextureCache::table(const TransferFunction& transfer, bool premult
 
 osg::Texture* TextureCache::occupancy(const Volume& volume, const TransferFunction& transfer, int cellSize, int apron,
                                       const std::string& key, const std::function<std::pair<CellTest, CellTest>()>& tests,
-                                      unsigned int cull)
+                                      unsigned int cull, bool& anyVisible)
 {
     bool newRanges = false;
     const Ranges& ranges = rangesOf(volume, cellSize, apron, cull, newRanges);
@@ -108,12 +108,15 @@ osg::Texture* TextureCache::occupancy(const Volume& volume, const TransferFuncti
         o.volume = &volume;
         o.transfer = &transfer;
         const auto [visible, homogeneous] = tests();
-        o.texture = makeOccupancyTexture(ranges.grid, occupancyOf(ranges.grid, visible, homogeneous));
+        const std::vector<std::uint8_t> cells = occupancyOf(ranges.grid, visible, homogeneous);
+        o.anyVisible = std::any_of(cells.begin(), cells.end(), [](std::uint8_t c) { return c != 0; });
+        o.texture = makeOccupancyTexture(ranges.grid, cells);
         o.volumeModified = volume.modifiedCount();
         o.transferModified = transfer.modifiedCount();
         ++_occupancyBuilds;
     }
     o.lastCull = cull;
+    anyVisible = o.anyVisible;
     return o.texture.get();
 }
 

@@ -32,10 +32,10 @@ public:
     /// The occupancy texture of `volume` in macrocells of `cellSize` voxels with `apron` under the
     /// predicates `tests` makes (visibility; and homogeneity, or none), remade when the volume,
     /// `transfer` or `key` (the classification, its settings, the tolerance) changes; the
-    /// value-range grid is kept per volume.
+    /// value-range grid is kept per volume. `anyVisible` tells whether some cell may be visible.
     osg::Texture* occupancy(const Volume& volume, const TransferFunction& transfer, int cellSize, int apron,
                             const std::string& key, const std::function<std::pair<CellTest, CellTest>()>& tests,
-                            unsigned int cull);
+                            unsigned int cull, bool& anyVisible);
     /// The value-range texture of `volume` in macrocells of `cellSize` voxels with `apron`.
     osg::Texture* ranges(const Volume& volume, int cellSize, int apron, unsigned int cull);
     /// Occupancy grids built so far (each TF or classification change builds one).
@@ -82,6 +82,7 @@ private:
         osg::ref_ptr<const Volume> volume;
         osg::ref_ptr<const TransferFunction> transfer;
         osg::ref_ptr<osg::Texture3D> texture;
+        bool anyVisible = true;  ///< some cell may be visible
         unsigned int volumeModified = 0, transferModified = 0;
         unsigned int lastCull = 0;
     };

@@ -19,6 +19,7 @@ struct VolumeProxy
     std::string key;                                 ///< composition key of the current state
     std::shared_ptr<const ComposedProgram> program;  ///< the program drawn
     osg::Vec3d boxSize;
+    bool hidden = false;  ///< its occupancy grids show no sample can be visible: not drawn
     unsigned int lastCull = 0;
 
     /// Makes the box of `size` (centred on the transform) and the state of `program`, each only
