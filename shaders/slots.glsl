@@ -9,6 +9,12 @@
 // Reconstruction: the GL texel value (normalised stored scalar) at pos.
 float volren_fetchScalar(vec3 pos);
 
+// VolumeStorage: where the voxels of the sampled level live (one 3D texture, or bricks in a
+// pool found through a page table). The linearly filtered texel value at pos (clamped to the
+// edge voxels), and the texel value of one voxel of the level.
+float volren_volumeSample(vec3 pos);
+float volren_volumeTexel(ivec3 voxel);
+
 // Classification: texel value -> unassociated RGB and the opacity of one reference segment
 // (the smallest voxel spacing). NaN maps to fully transparent.
 vec4 volren_classify(float scalar);

@@ -5,6 +5,7 @@
 # skipping (the default) and without it (--set acceleration=null), alternating, in one run. Prints the median draw time of each, the
 # ratios, and the largest pixel difference between the two images (0 when skipping is exact).
 # Usage: tools/bench-skipping.sh [SIZE (default 256)] [ROUNDS (default 3)]
+# (VOLREN_BENCH_INPUTS and VOLREN_BENCH_KINDS pick datasets and rows, e.g. VOLREN_BENCH_KINDS="empty mip")
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 volren="$here/build/bin/volren"
@@ -17,7 +18,7 @@ trap 'rm -rf "$work"' EXIT
 median() { sort -g | awk '{v[NR]=$1} END {print (NR % 2) ? v[(NR+1)/2] : (v[NR/2] + v[NR/2+1]) / 2}'; }
 
 printf '| dataset | TF or traversal | skipping ms | no skipping ms | ratio | max pixel difference |\n|---|---|---|---|---|---|\n'
-for input in ct/bonsai.nii.gz ct/CT_AVM.nii.gz dicom/pancreas_ct_subset; do
+for input in ${VOLREN_BENCH_INPUTS:-ct/bonsai.nii.gz ct/CT_AVM.nii.gz dicom/pancreas_ct_subset}; do
   path="$data/$input"
   [ -e "$path" ] || { echo "skipping $input: not found" >&2; continue; }
   info=$("$volren" info "$path")
@@ -26,7 +27,7 @@ for input in ct/bonsai.nii.gz ct/CT_AVM.nii.gz dicom/pancreas_ct_subset; do
   p99=$(sed -n 's/.*p99 \([^,]*\),.*/\1/p' <<<"$info")
   printf '%s 0 0 0 0\n%s 0 0 0 0\n%s 255 240 220 200\n' "$lo" "$p99" "$hi" >"$work/sparse.tf"
   printf '%s 0 0 0 0\n%s 0 0 0 0\n' "$lo" "$hi" >"$work/empty.tf"
-  for kind in dense sparse empty mip minip isosurface; do
+  for kind in ${VOLREN_BENCH_KINDS:-dense sparse empty mip minip isosurface}; do
     args=()  # the sparse and empty TFs, or a traversal with the dense (default) TF
     case "$kind" in
       sparse | empty) args=(--tf "$work/$kind.tf") ;;

@@ -5,5 +5,5 @@ float volren_fetchScalar(vec3 pos)
 {
     ivec3 size = ivec3(volren_dims);
     ivec3 voxel = clamp(ivec3(floor(pos * volren_dims)), ivec3(0), size - 1);
-    return texelFetch(volren_volume, voxel, 0).r;
+    return volren_volumeTexel(voxel);
 }

@@ -17,14 +17,14 @@ float volren_fetchScalar(vec3 pos)
     vec3 g0 = w0 + w1, g1 = w2 + w3;
     vec3 h0 = (index - 0.5 + w1 / g0) / volren_dims;  // texel centres are at (i + 0.5) / n
     vec3 h1 = (index + 1.5 + w3 / g1) / volren_dims;
-    float v000 = texture(volren_volume, vec3(h0.x, h0.y, h0.z)).r;
-    float v100 = texture(volren_volume, vec3(h1.x, h0.y, h0.z)).r;
-    float v010 = texture(volren_volume, vec3(h0.x, h1.y, h0.z)).r;
-    float v110 = texture(volren_volume, vec3(h1.x, h1.y, h0.z)).r;
-    float v001 = texture(volren_volume, vec3(h0.x, h0.y, h1.z)).r;
-    float v101 = texture(volren_volume, vec3(h1.x, h0.y, h1.z)).r;
-    float v011 = texture(volren_volume, vec3(h0.x, h1.y, h1.z)).r;
-    float v111 = texture(volren_volume, vec3(h1.x, h1.y, h1.z)).r;
+    float v000 = volren_volumeSample(vec3(h0.x, h0.y, h0.z));
+    float v100 = volren_volumeSample(vec3(h1.x, h0.y, h0.z));
+    float v010 = volren_volumeSample(vec3(h0.x, h1.y, h0.z));
+    float v110 = volren_volumeSample(vec3(h1.x, h1.y, h0.z));
+    float v001 = volren_volumeSample(vec3(h0.x, h0.y, h1.z));
+    float v101 = volren_volumeSample(vec3(h1.x, h0.y, h1.z));
+    float v011 = volren_volumeSample(vec3(h0.x, h1.y, h1.z));
+    float v111 = volren_volumeSample(vec3(h1.x, h1.y, h1.z));
     float y0 = g0.x * (g0.y * v000 + g1.y * v010) + g1.x * (g0.y * v100 + g1.y * v110);
     float y1 = g0.x * (g0.y * v001 + g1.y * v011) + g1.x * (g0.y * v101 + g1.y * v111);
     return g0.z * y0 + g1.z * y1;

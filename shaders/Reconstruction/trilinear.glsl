@@ -1,7 +1,7 @@
-// Reconstruction/trilinear: hardware trilinear filtering of the volume texture (the texture of
-// the mip level the node samples, with level of detail).
+// Reconstruction/trilinear: hardware trilinear filtering of the voxels of the mip level the node
+// samples (level of detail), wherever the VolumeStorage keeps them.
 // float volren_fetchScalar(vec3 pos)
 float volren_fetchScalar(vec3 pos)
 {
-    return texture(volren_volume, pos).r;
+    return volren_volumeSample(pos);
 }

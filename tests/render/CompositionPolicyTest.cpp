@@ -195,6 +195,7 @@ TEST(CompositionPolicy, InvalidCompositionsAreRejectedWithTheirReason)
     EXPECT_NE(reason({{"RayTraversal", "null"}}).find("nothing marches"), std::string::npos);
     EXPECT_EQ(reason({{"RayTraversal", "null"},
                       {"Reconstruction", "null"},
+                      {"VolumeStorage", "null"},
                       {"Classification", "null"},
                       {"Jitter", "null"},
                       {"Acceleration", "null"}}),
@@ -205,11 +206,15 @@ TEST(CompositionPolicy, InvalidCompositionsAreRejectedWithTheirReason)
     EXPECT_NE(reason({{"Illumination", "lambert"}}).find("nothing calls Illumination"), std::string::npos);
     EXPECT_NE(reason({}, 1).find("uses no lights"), std::string::npos);
     EXPECT_NE(reason({{"Gradient", "central"}}).find("nothing calls Gradient"), std::string::npos);
-    EXPECT_NE(reason({{"RayTraversal", "gmip"}, {"Reconstruction", "null"}}).find("needs a real Gradient"),
+    EXPECT_NE(reason({{"RayTraversal", "gmip"}, {"Reconstruction", "null"}, {"VolumeStorage", "null"}}).find("needs a real Gradient"),
               std::string::npos);
-    EXPECT_NE(reason({{"Reconstruction", "null"}, {"Acceleration", "occupancy"}}).find("needs a Reconstruction bounded by its voxels"),
+    EXPECT_NE(reason({{"Reconstruction", "null"}, {"VolumeStorage", "null"}, {"Acceleration", "occupancy"}})
+                  .find("needs a Reconstruction bounded by its voxels"),
               std::string::npos);
-    EXPECT_EQ(reason({{"Reconstruction", "null"}}), "");
+    EXPECT_EQ(reason({{"Reconstruction", "null"}, {"VolumeStorage", "null"}}), "");
+    EXPECT_NE(reason({{"Reconstruction", "null"}}).find("nothing calls VolumeStorage"), std::string::npos);
+    EXPECT_NE(reason({{"VolumeStorage", "null"}}).find("Reconstruction/trilinear needs a real VolumeStorage"), std::string::npos);
+    EXPECT_EQ(reason({{"VolumeStorage", "bricked"}, {"Reconstruction", "tricubic"}}), "");
     EXPECT_EQ(reason({{"Acceleration", "occupancy"}}), "");
     EXPECT_NE(reason({{"RayTraversal", "mip"}, {"Acceleration", "occupancy"}}).find("occupancy leaps by opacity, RayTraversal/mip by extremum"),
               std::string::npos);
@@ -242,13 +247,17 @@ std::set<std::string> calledSlots(std::string text)
 {
     text = std::regex_replace(text, std::regex(R"(//[^\n]*)"), "");
     std::set<std::string> called;
-    for (const SlotInfo& s : slots()) {
-        if (s.function.empty()) continue;
-        const std::regex call("(\\w+\\s+)?\\b" + s.function + "\\s*\\(");
+    // Slots with a second function besides SlotInfo::function (slots.glsl).
+    std::vector<std::pair<std::string, std::string>> functions = {{"VolumeStorage", "volren_volumeTexel"},
+                                                                  {"Acceleration", "volren_stepsPerSample"}};
+    for (const SlotInfo& s : slots())
+        if (!s.function.empty()) functions.emplace_back(s.name, s.function);
+    for (const auto& [slot, function] : functions) {
+        const std::regex call("(\\w+\\s+)?\\b" + function + "\\s*\\(");
         for (auto it = std::sregex_iterator(text.begin(), text.end(), call); it != std::sregex_iterator(); ++it) {
             const std::string type = (*it)[1].str();
-            if (std::regex_match(type, std::regex(R"((float|vec[234]|bool|void)\s+)"))) continue;  // a definition
-            called.insert(s.name);
+            if (std::regex_match(type, std::regex(R"((float|vec[234]|bool|void|int)\s+)"))) continue;  // a definition
+            called.insert(slot);
         }
     }
     return called;

@@ -19,7 +19,7 @@ const std::vector<std::pair<std::string, std::string>>& slotKeys()
         {"classification", "Classification"}, {"gradient", "Gradient"},
         {"gradientinput", "GradientInput"}, {"shading", "Shading"},
         {"illumination", "Illumination"}, {"shadowing", "Shadowing"},
-        {"acceleration", "Acceleration"}};
+        {"acceleration", "Acceleration"}, {"volumestorage", "VolumeStorage"}};
     return keys;
 }
 
@@ -71,7 +71,7 @@ bool RenderSettings::operator==(const RenderSettings& o) const
            same(shininess, o.shininess) && same(roughness, o.roughness) && same(threshold, o.threshold) &&
            debugView == o.debugView && macrocellSize == o.macrocellSize &&
            same(adaptiveTolerance, o.adaptiveTolerance) && adaptiveSteps == o.adaptiveSteps && lod == o.lod &&
-           lodByDistance == o.lodByDistance && texturePrecision == o.texturePrecision &&
+           memoryBudgetMB == o.memoryBudgetMB && brickSize == o.brickSize && lodByDistance == o.lodByDistance && texturePrecision == o.texturePrecision &&
            functions == o.functions && forceNull == o.forceNull;
 }
 
@@ -95,6 +95,8 @@ std::vector<std::pair<std::string, std::string>> RenderSettings::keys()
         {"adaptiveSteps", "adaptive sampling: most march steps one sample stands for in a homogeneous macrocell (1-64)"},
         {"lod", "level of detail: mip level the volume is sampled from, the step growing as 2^lod (0-16)"},
         {"lodByDistance", "level of detail by distance: the level rises where a pixel covers more than a voxel (on/off)"},
+        {"memoryBudgetMB", "GPU memory for one volume's voxels in MiB (0 = auto: half of what the GPU reports, else 2048); larger volumes are bricked"},
+        {"brickSize", "edge of the bricks of a bricked volume in voxels (4-512; each stored with a one-voxel border)"},
         {"texturePrecision", "volume texture precision: auto (16bit on drivers that filter 8-bit textures coarsely), native, 16bit"},
         {"isoValue", "isosurface data value (empty = the TF's first opaque value)"},
         {"shadingThreshold", "opacity below which lighting_threshold shading leaves samples unlit"},
@@ -125,6 +127,8 @@ std::string RenderSettings::get(const std::string& key) const
     if (k == "adaptivetolerance") return number(adaptiveTolerance);
     if (k == "adaptivesteps") return std::to_string(adaptiveSteps);
     if (k == "lod") return std::to_string(lod);
+    if (k == "memorybudgetmb") return std::to_string(memoryBudgetMB);
+    if (k == "bricksize") return std::to_string(brickSize);
     if (k == "lodbydistance") return lodByDistance ? "on" : "off";
     if (k == "textureprecision") return texturePrecision;
     if (k == "isovalue") return std::isnan(isoValue) ? std::string() : number(isoValue);
@@ -209,7 +213,9 @@ bool RenderSettings::set(const std::string& key, const std::string& value, std::
     };
     const Whole wholes[] = {{"macrocellsize", &macrocellSize, 1, 1024, "voxels"},
                             {"adaptivesteps", &adaptiveSteps, 1, 64, "steps"},
-                            {"lod", &lod, 0, 16, "mip levels"}};
+                            {"lod", &lod, 0, 16, "mip levels"},
+                            {"memorybudgetmb", &memoryBudgetMB, 0, 1 << 24, "MiB"},
+                            {"bricksize", &brickSize, 4, 512, "voxels"}};
     for (const Whole& w : wholes) {
         if (k != w.key) continue;
         if (!parseFiniteNumber(value, v) || v != std::floor(v) || v < w.lo || v > w.hi)

@@ -32,6 +32,12 @@ struct RenderSettings
     /// Level of detail: the volume is sampled from this level of its mip chain (0 = full
     /// resolution, each level half the voxels along each axis) with a step 2^lod times as long.
     int lod = 0;
+    /// GPU memory for this volume's voxels, in MiB (0 = auto: half of the dedicated memory the
+    /// driver reports, else 2048). A volume whose sampled level does not fit, or is larger than
+    /// the GPU's largest 3D texture, is drawn from bricks (VolumeStorage bricked) within it.
+    int memoryBudgetMB = 0;
+    /// Edge of the bricks of a bricked volume, in voxels (each stored with a one-voxel border).
+    int brickSize = 32;
     /// Level of detail by distance: on top of lod, the level rises by log2 of the voxels one
     /// pixel covers where the volume is nearest the camera (rounded down), so far volumes sample
     /// coarser and a volume filling the view keeps its full resolution.

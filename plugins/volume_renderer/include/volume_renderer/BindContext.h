@@ -30,6 +30,8 @@ struct RenderSettings;
 /// - HomogeneityGrid: the OccupancyGrid with visible cells told apart: 255 where the
 ///   classification varies by at most the node's adaptiveTolerance over the cell's values
 ///   (Classification's `variation` mirror), else 128 (adaptive sampling).
+/// - BrickPool: the volume's mip levels in bricks in a pool texture with their page table
+///   (BrickPool.h; VolumeStorage bricked), within the node's memory budget.
 enum class AuxData
 {
     VolumeTexture,
@@ -40,8 +42,11 @@ enum class AuxData
     EntryPoints,
     OccupancyGrid,
     MacrocellRanges,
-    HomogeneityGrid
+    HomogeneityGrid,
+    BrickPool
 };
+
+struct BrickedVolume;
 
 /// A light as the volume sees it, in the VolumeNode's local coordinates.
 struct LightInfo
@@ -79,6 +84,7 @@ struct BindContext
     bool writesDepth = false;            ///< the composition's traversal reports surface hits
     /// Texture of a volume (shared per Volume); `nearest` selects nearest-voxel filtering.
     std::function<osg::Texture*(const Volume&, bool nearest)> volumeTexture = {};
+    const BrickedVolume* bricks = nullptr;  ///< the volume's bricks when a composition asks for BrickPool
     /// Size of the box the proxy draws; zero means the volume's own box (a multi-volume set's
     /// program draws the union of its members' boxes).
     osg::Vec3d boxSize = {};

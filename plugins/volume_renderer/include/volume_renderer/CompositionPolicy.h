@@ -22,6 +22,8 @@ struct SceneOffer
     std::vector<LightInfo> lights;  ///< lights in the VolumeNode's local coordinates
     std::vector<ClipInfo> clips;    ///< clip shapes that cut the volume
     bool opaqueGeometry = false;    ///< opaque polygons are drawn before the volumes
+    /// The sampled level of the volume exceeds the node's memory budget or the largest 3D texture.
+    bool exceedsTextureBudget = false;
 };
 
 /// A volume's composition with the clip each template instance binds: per template slot, one

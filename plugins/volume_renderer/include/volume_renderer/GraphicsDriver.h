@@ -1,4 +1,7 @@
 #pragma once
+#include <volume_model/RenderSettings.h>
+
+#include <cstddef>
 #include <string>
 
 namespace volren {
@@ -14,5 +17,16 @@ std::string graphicsDriver();
 /// (Mesa's llvmpipe and softpipe: measured, a ramp between two R8 texels comes back in steps of
 /// 1/255), so that 8-bit volumes filter as finely as the reference only as 16-bit textures.
 bool filtersBytesCoarsely();
+
+/// Records the context's GL_MAX_3D_TEXTURE_SIZE and its dedicated video memory in bytes (0 where
+/// the driver does not report it: GL_NVX_gpu_memory_info, GL_ATI_meminfo).
+void recordGraphicsLimits(int largest3DTexture, std::size_t dedicatedMemory);
+
+/// The recorded largest 3D texture edge, or 2048 (what every OpenGL 4.5 driver allows).
+int largest3DTexture();
+
+/// GPU bytes one volume's voxels may take: memoryBudgetMB when set, else half the recorded
+/// dedicated memory, else 2 GiB.
+std::size_t volumeMemoryBudget(const RenderSettings& settings);
 
 }  // namespace volren

@@ -75,6 +75,9 @@ struct ImplementationTraits
     /// leaps' queries costing more than they save on the shared CTs (MIP: the running maximum
     /// rarely rules a cell out before the brightest structure is met); `acceleration=range` asks.
     bool skipsByDefault = true;
+    /// VolumeStorage: keeps the voxels within the node's memory budget, whatever the volume's
+    /// size; the policy chooses it for volumes that exceed the budget or the largest 3D texture.
+    bool withinBudget = false;
     /// Acceleration: it changes the image, within a bound it states (adaptive steps), so the
     /// policy never chooses it unless asked; skipping alone is exact.
     bool approximates = false;

@@ -55,6 +55,7 @@ void registerJitterFunctions(ShaderFunctionRegistry& registry);
 void registerRayTraversalFunctions(ShaderFunctionRegistry& registry);
 void registerClipPositionFunctions(ShaderFunctionRegistry& registry);
 void registerReconstructionFunctions(ShaderFunctionRegistry& registry);
+void registerVolumeStorageFunctions(ShaderFunctionRegistry& registry);
 void registerClassificationFunctions(ShaderFunctionRegistry& registry);
 void registerShadingFunctions(ShaderFunctionRegistry& registry);
 void registerGradientFunctions(ShaderFunctionRegistry& registry);

@@ -55,6 +55,7 @@ std::string CompositionPolicy::defaultImplementation(const std::string& slot)
     static const std::map<std::string, std::string> defaults = {{"RaySetup", "box_intersection"},
                                                                 {"RayTraversal", "dvr_front_to_back"},
                                                                 {"Reconstruction", "trilinear"},
+                                                                {"VolumeStorage", "texture"},
                                                                 {"Classification", "tf1d"},
                                                                 {"GradientInput", "scalar"},
                                                                 {"Jitter", "hash"}};
@@ -103,6 +104,14 @@ ChosenComposition CompositionPolicy::choose(const RenderSettings& settings, cons
         if (!slot.isTemplate && !out.composition.choice.count(slot.name))
             out.composition.choice[slot.name] = wish.chosen(slot.name, defaultImplementation(slot.name));
     chooseClips(out, settings, offer, pass);
+    if (out.composition.functionFor("Reconstruction") == none && wish.named("VolumeStorage").empty())
+        out.composition.choice["VolumeStorage"] = none;  // nothing reads voxels
+    else if (offer.exceedsTextureBudget && wish.named("VolumeStorage").empty())
+        for (const std::string& name : _registry.names("VolumeStorage"))
+            if (const ShaderFunction* f = _registry.find("VolumeStorage", name); f && f->traits.withinBudget) {
+                out.composition.choice["VolumeStorage"] = name;
+                break;
+            }
     // Skipping, by default wherever an implementation takes the leaps the traversal can take
     // (the user's choice is checked, not replaced).
     if (wish.named("Acceleration").empty())

@@ -35,6 +35,7 @@ void ShaderFunctionRegistry::addBuiltins()
     registerRayTraversalFunctions(*this);
     registerClipPositionFunctions(*this);
     registerReconstructionFunctions(*this);
+    registerVolumeStorageFunctions(*this);
     registerClassificationFunctions(*this);
     registerShadingFunctions(*this);
     registerGradientFunctions(*this);

@@ -6,6 +6,7 @@ const std::vector<SlotInfo>& slots()
 {
     static const std::vector<SlotInfo> all = {
         {.name = "Reconstruction", .function = "volren_fetchScalar"},
+        {.name = "VolumeStorage", .function = "volren_volumeSample"},
         {.name = "Classification", .function = "volren_classify"},
         {.name = "GradientInput", .function = "volren_gradientInput"},
         {.name = "Gradient", .function = "volren_gradient"},

@@ -1,4 +1,4 @@
-// Reconstruction (scalar fetch) implementations.
+// Reconstruction (scalar fetch) implementations: filters over the voxels the VolumeStorage holds.
 #include "CommonBindings.h"
 
 #include <volume_renderer/ShaderFunctionRegistry.h>
@@ -13,14 +13,8 @@ void registerReconstructionFunctions(ShaderFunctionRegistry& registry)
         registry.add({.slot = "Reconstruction",
                       .name = name,
                       .uniforms = bindings::geometry,
-                      .textures = {bindings::volumeTexture},
-                      .needs = {AuxData::VolumeTexture},
-                      .bind =
-                          [](BindContext& c) {
-                              bindings::bindGeometry(c);
-                              bindings::bindVolumeTexture(c);
-                          },
-                      .traits = {.calls = SlotList{}, .footprint = footprint}});
+                      .bind = bindings::bindGeometry,
+                      .traits = {.calls = SlotList{"VolumeStorage"}, .required = {"VolumeStorage"}, .footprint = footprint}});
 }
 
 }  // namespace volren

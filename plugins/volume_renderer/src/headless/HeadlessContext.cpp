@@ -7,6 +7,7 @@
 
 #include <osg/Notify>
 
+#include <algorithm>
 #include <cstdlib>
 #include <cstring>
 #include <stdexcept>
@@ -128,6 +129,12 @@ HeadlessContext::HeadlessContext()
                    (renderer ? renderer : "?");
     OSG_INFO << "volren: " << _description << std::endl;
     recordGraphicsDriver(renderer ? renderer : "");
+    GLint largest = 0, kilobytes = 0;
+    glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &largest);
+    glGetIntegerv(0x9047, &kilobytes);  // GL_GPU_MEMORY_INFO_DEDICATED_VIDMEM_NVX: an error elsewhere
+    while (glGetError() != GL_NO_ERROR) {
+    }
+    recordGraphicsLimits(largest, std::size_t(std::max<GLint>(kilobytes, 0)) * 1024);
 }
 
 HeadlessContext::~HeadlessContext()

@@ -1,5 +1,6 @@
 #include "ProgramBinder.h"
 
+#include <volume_renderer/GraphicsDriver.h>
 #include <volume_renderer/SampleDistance.h>
 
 #include <cmath>
@@ -93,6 +94,18 @@ bool bindProgram(BindContext& context, const ComposedProgram& program,
     const bool wide = precision == "16bit" || (precision == "auto" && context.coarseByteFiltering);
     if (needs(AuxData::VolumeTexture))
         context.aux[AuxData::VolumeTexture] = textures.volume(context.volume, false, cull, context.lod, wide);
+    if (needs(AuxData::BrickPool)) {
+        const BrickedVolume& bricks = textures.bricked(context.volume, context.lod, context.settings.brickSize,
+                                                       volumeMemoryBudget(context.settings), largest3DTexture(), wide, cull);
+        context.bricks = &bricks;
+        context.aux[AuxData::BrickPool] = bricks.pool;
+        // The budget holds the levels from finestComplete down: the volume is sampled there, at
+        // that level's step, as if it were the node's level of detail.
+        if (const int level = bricks.residency.finestComplete; level > context.lod) {
+            context.sampleDistance = std::ldexp(context.sampleDistance, level - context.lod);
+            context.lod = level;
+        }
+    }
     if (needs(AuxData::TransferFunctionTable))
         context.aux[AuxData::TransferFunctionTable] = textures.table(context.transfer, false, cull);
     if (needs(AuxData::PremultipliedTable))

@@ -2,6 +2,7 @@
 #include "MultiVolumeSet.h"
 #include "ProgramBinder.h"
 #include "SceneAnalysis.h"
+#include "TextureBudget.h"
 
 #include "../resources/TextureCache.h"
 #include "../resources/VolumeProxy.h"
@@ -106,6 +107,7 @@ void VolumeScene::traverse(osg::NodeVisitor& nv)
     for (VolumeCandidate& c : candidates) {
         c.lod = levelOfDetail(c, *cv);
         c.coarseByteFiltering = coarseBytes;
+        c.offer.exceedsTextureBudget = exceedsTextureBudget(*c.node, c.lod, coarseBytes);
     }
     std::vector<ChosenComposition> chosen;
     std::vector<osg::BoundingBoxd> bounds;

@@ -64,13 +64,8 @@ osg::Texture* TextureCache::volume(const Volume& volume, bool nearest, unsigned 
         gl.source = &volume;
         osg::Image* image = nullptr;
         if (level > 0) {
-            Levels& levels = _levels[&volume];
-            if (levels.modified != volume.modifiedCount() || int(levels.images.size()) < level) {
-                levels.images = mipLevelImages(volume, level);
-                levels.modified = volume.modifiedCount();
-            }
-            levels.lastCull = cull;
-            image = levels.images.at(std::size_t(std::min<int>(level, int(levels.images.size())) - 1)).get();
+            const auto& images = levelImages(volume, level, cull);
+            image = images.at(std::size_t(std::min<int>(level, int(images.size())) - 1)).get();
         }
         gl.texture = makeVolumeTexture(volume, wide, image);
         if (nearest) {
@@ -82,6 +77,31 @@ osg::Texture* TextureCache::volume(const Volume& volume, bool nearest, unsigned 
     if (level > 0) _levels[&volume].lastCull = cull;
     gl.lastCull = cull;
     return gl.texture.get();
+}
+
+const std::vector<osg::ref_ptr<osg::Image>>& TextureCache::levelImages(const Volume& volume, int count, unsigned int cull)
+{
+    Levels& levels = _levels[&volume];
+    if (levels.modified != volume.modifiedCount() || int(levels.images.size()) < count) {
+        levels.images = mipLevelImages(volume, count);
+        levels.modified = volume.modifiedCount();
+    }
+    levels.lastCull = cull;
+    return levels.images;
+}
+
+const BrickedVolume& TextureCache::bricked(const Volume& volume, int level, int brickSize, std::size_t budget, int largest,
+                                           bool wide, unsigned int cull)
+{
+    Bricks& b = _bricks[{&volume, level, brickSize, budget, largest, wide}];
+    if (!b.bricks.pool || b.modified != volume.modifiedCount()) {
+        b.volume = &volume;
+        const auto& images = levelImages(volume, mipLevelCount(volume.dims()) - 1, cull);
+        b.bricks = makeBrickedVolume(volume, images, level, brickSize, budget, largest, wide);
+        b.modified = volume.modifiedCount();
+    }
+    b.lastCull = cull;
+    return b.bricks;
 }
 
 osg::Texture* TextureCache::table(const TransferFunction& transfer, bool premultiplied, unsigned int cull)
@@ -150,13 +170,14 @@ void TextureCache::endCull(unsigned int cull)
     dropStale(_tables, cull);
     dropStale(_ranges, cull);
     dropStale(_occupancies, cull);
+    dropStale(_bricks, cull);
 }
 
 std::size_t TextureCache::count() const
 {
     std::size_t rangeTextures = 0;
     for (const auto& [key, r] : _ranges) rangeTextures += r.texture ? 1 : 0;
-    return _volumes.size() + _tables.size() + _occupancies.size() + rangeTextures;
+    return _volumes.size() + _tables.size() + _occupancies.size() + rangeTextures + 2 * _bricks.size();
 }
 
 std::size_t TextureCache::bytes() const
@@ -165,7 +186,9 @@ std::size_t TextureCache::bytes() const
     for (const auto& [key, o] : _occupancies) occupancy += textureBytes(*o.texture);
     for (const auto& [key, r] : _ranges)
         if (r.texture) occupancy += textureBytes(*r.texture);
-    return imageBytes(_volumes) + imageBytes(_tables) + occupancy;
+    std::size_t bricks = 0;
+    for (const auto& [key, b] : _bricks) bricks += b.bricks.poolBytes + textureBytes(*b.bricks.pageTable);
+    return imageBytes(_volumes) + imageBytes(_tables) + occupancy + bricks;
 }
 
 }  // namespace volren

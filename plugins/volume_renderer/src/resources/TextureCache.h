@@ -6,6 +6,7 @@
 #include <osg/Texture1D>
 #include <osg/Texture3D>
 
+#include <volume_renderer/BrickPool.h>
 #include <volume_renderer/MacrocellGrid.h>
 
 #include <functional>
@@ -38,6 +39,10 @@ public:
                             unsigned int cull, bool& anyVisible);
     /// The value-range texture of `volume` in macrocells of `cellSize` voxels with `apron`.
     osg::Texture* ranges(const Volume& volume, int cellSize, int apron, unsigned int cull);
+    /// `volume` from mip level `level` down in bricks of `brickSize` within `budget` bytes and
+    /// textures of at most `largest` texels per axis (8-bit data in 16-bit texels when `wide`).
+    const BrickedVolume& bricked(const Volume& volume, int level, int brickSize, std::size_t budget, int largest, bool wide,
+                                 unsigned int cull);
     /// Occupancy grids built so far (each TF or classification change builds one).
     unsigned int occupancyBuilds() const { return _occupancyBuilds; }
     /// Frees what the last few cull traversals before `cull` did not use.
@@ -87,6 +92,16 @@ private:
         unsigned int lastCull = 0;
     };
     std::map<std::tuple<const Volume*, const TransferFunction*, int, int, std::string>, Occupancy> _occupancies;
+    struct Bricks
+    {
+        osg::ref_ptr<const Volume> volume;
+        BrickedVolume bricks;
+        unsigned int modified = 0;
+        unsigned int lastCull = 0;
+    };
+    std::map<std::tuple<const Volume*, int, int, std::size_t, int, bool>, Bricks> _bricks;
+    /// Levels 1 .. `count` of `volume`'s mip chain, made when missing or the volume changed.
+    const std::vector<osg::ref_ptr<osg::Image>>& levelImages(const Volume& volume, int count, unsigned int cull);
     unsigned int _occupancyBuilds = 0;
 };
 
