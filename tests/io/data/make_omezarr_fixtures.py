@@ -4,12 +4,15 @@ tests/io/data/omezarr/ with zarr-python, independently of volren's reader and wr
 
 Made with Debian 12's python3-zarr 2.13.6, python3-numcodecs 0.11.0 and numpy 1.24.2
 (`apt-get install python3-zarr`); Debian's python3 is /usr/bin/python3 (a pyenv python3 first
-on PATH does not see the Debian modules). Deterministic; rerun after changing it:
+on PATH does not see the Debian modules). Rerun after changing it:
     /usr/bin/python3 tests/io/data/make_omezarr_fixtures.py
 
 Every array holds a closed formula of its indices, written next to it below and repeated in
 the test, so the test checks voxel values against the formula, not against this script's
-output. Each fixture is a few KB. It also writes the fuzz seeds with compressed blosc chunks,
+output. Each fixture is a few KB. The output is the same from run to run except the gzip
+chunks of gzip_u1.ome.zarr, whose gzip headers carry the time of writing.
+
+It also writes the fuzz seeds whose chunks are compressed blosc streams,
 tests/fuzz/corpus/zarr/blosc-*.seed (make_corpus.py, standard library only, cannot)."""
 import json
 import os
