@@ -12,7 +12,7 @@ packages=(
   build-essential cmake pkg-config
   libopenscenegraph-dev openscenegraph
   libglm-dev libtiff-dev libopenimageio-dev openimageio-tools zlib1g-dev
-  libgtest-dev libgmock-dev nlohmann-json3-dev libgdcm-dev libgdcm-tools
+  libgtest-dev libgmock-dev nlohmann-json3-dev libgdcm-dev libgdcm-tools libblosc-dev
   libegl-dev libegl-mesa0 libgl-dev libgl1-mesa-dri libgbm1
   mricron-data
   xvfb xauth netpbm

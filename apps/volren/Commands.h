@@ -15,8 +15,9 @@ int referenceCommand(const std::vector<std::string>& args);
 int compareCommand(const std::vector<std::string>& args);
 /// `volren info VOLUMEFILE`; returns the exit code.
 int infoCommand(const std::vector<std::string>& args);
-/// `volren convert IN OUT [--encoding raw|gzip]`: reads any volume file, writes it through
-/// osgDB (e.g. the NRRD writer); returns the exit code.
+/// `volren convert IN OUT [--encoding raw|gzip] [-O KEY=VALUE ...]`: reads any volume file,
+/// writes it through osgDB by OUT's extension (NRRD, OME-Zarr, a scene), passing -O words to the
+/// writer, with a progress bar for writers that report it; returns the exit code.
 int convertCommand(const std::vector<std::string>& args);
 /// Reads a volume file, drawing a one-line progress bar on stderr once the load takes over 0.5 s.
 osg::ref_ptr<Volume> readVolumeWithProgress(const std::string& path);

@@ -417,6 +417,37 @@ TEST(VolrenCli, ConvertWritesNrrdThatReadsBackIdentically)
     EXPECT_NE(run.output.find(dir + "/x.unknownformat"), std::string::npos) << run.output;
 }
 
+TEST(VolrenCli, ConvertWritesAnOmeZarrPyramidThatReadsBack)
+{
+    VOLREN_REQUIRE_SHARED_DATA();
+    const std::string dir = tempDirectory();
+    const std::string input = sharedData("mri/HeadMRVolume.mhd");  // 48 x 62 x 42 uint8, spacing 4
+    CliRun run = volren("convert '" + input + "' '" + dir + "/head.ome.zarr' -O chunk=16 -O compression=zlib");
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    EXPECT_NE(run.output.find("48 x 62 x 42 uint8, 1 channel"), std::string::npos) << run.output;
+    const osg::ref_ptr<Volume> original = readVolumeFile(input);
+    const osg::ref_ptr<Volume> converted = readVolumeFile(dir + "/head.ome.zarr");
+    ASSERT_EQ(converted->dims(), original->dims());
+    EXPECT_EQ(converted->spacing(), original->spacing());
+    ASSERT_EQ(converted->byteSize(), original->byteSize());
+    EXPECT_EQ(std::memcmp(converted->data(), original->data(), original->byteSize()), 0);
+    // 48x62x42 -> 24x31x21 -> 12x16x11: levels until every axis fits one 16-voxel chunk.
+    int levels = 0;
+    EXPECT_TRUE(converted->getUserValue("omeZarrLevels", levels));
+    EXPECT_EQ(levels, 3);
+    std::ifstream zarray(dir + "/head.ome.zarr/0/.zarray");
+    const nlohmann::json meta = nlohmann::json::parse(zarray);
+    EXPECT_EQ(meta["chunks"], nlohmann::json({16, 16, 16}));
+    EXPECT_EQ(meta["compressor"]["id"], "zlib");
+
+    run = volren("convert '" + input + "' '" + dir + "/x.ome.zarr' -O");
+    EXPECT_EQ(run.exitCode, 2) << run.output;
+    run = volren("convert '" + input + "' '" + dir + "/x.ome.zarr' -O compression=lzma");
+    EXPECT_EQ(run.exitCode, 1) << run.output;
+    EXPECT_NE(run.output.find(dir + "/x.ome.zarr: option compression=lzma"), std::string::npos) << run.output;
+    EXPECT_FALSE(std::filesystem::exists(dir + "/x.ome.zarr"));
+}
+
 TEST(VolrenCli, BadArgumentsExitWithUsageErrors)
 {
     VOLREN_REQUIRE_SHARED_DATA();

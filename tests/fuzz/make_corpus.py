@@ -4,6 +4,7 @@ files, a few hundred bytes each). Deterministic; run from anywhere:
     python3 tests/fuzz/make_corpus.py
 Detached formats hold HEADER + SEP + DATA (see FuzzSupport.h: dataSeparator)."""
 import gzip
+import json
 import os
 import struct
 import zlib
@@ -251,3 +252,45 @@ put("pvm", "pvm1_comment.pvm", b"PVM\n# comment\n2 2 2\n2\n" + ramp(8, 2, True))
 put("pvm", "pvm2.pvm", b"PVM2\n4 3 2\n1 1 2\n2\n" + ramp(n, 2, True))
 put("pvm", "pvm3_strings.pvm", b"PVM3\r\n2 2 2\r\n0.5 0.5 1\r\n1\r\n" + ramp(8) + b"description\0courtesy\0params\0comment\0")
 put("pvm", "dds.pvm", b"DDS v3d\n" + ramp(16))
+
+# --- OME-Zarr: ZARRAY + SEP + ZATTRS + SEP + CHUNK (chunk 0 of level 0; FuzzZarr.cpp) -----------
+# Blosc seeds with real lz4/zstd streams need numcodecs: tests/io/data/make_omezarr_fixtures.py
+# writes those (corpus/zarr/blosc-*.seed).
+
+
+
+def zarray(shape, chunks, dtype, compressor=None, order="C", fill=0, sep="."):
+    return json.dumps({"zarr_format": 2, "shape": shape, "chunks": chunks, "dtype": dtype, "compressor": compressor,
+                       "fill_value": fill, "order": order, "filters": None, "dimension_separator": sep}).encode()
+
+
+def zattrs(names, scale, omero=None):
+    kinds = {"t": "time", "c": "channel", "z": "space", "y": "space", "x": "space"}
+    a = {"multiscales": [{"version": "0.4", "axes": [{"name": n, "type": kinds[n], "unit": "micrometer" if kinds[n] == "space" else None}
+                                                     for n in names],
+                          "datasets": [{"path": "0", "coordinateTransformations": [{"type": "scale", "scale": scale},
+                                                                                   {"type": "translation", "translation": [0.0] * len(names)}]}]}]}
+    if omero:
+        a["omero"] = omero
+    return json.dumps(a).encode()
+
+
+def blosc_memcpy(data, typesize):
+    """A blosc 1 frame that stores `data` uncompressed (flag 0x02), as blosc does for small buffers."""
+    return struct.pack("<BBBBIII", 2, 1, 0x02 | 0x01, typesize, len(data), len(data), len(data) + 16) + data
+
+
+zyx = zattrs("zyx", [2.0, 0.5, 0.5])
+put("zarr", "zlib_u2_dot.seed", zarray([2, 3, 4], [2, 3, 4], "<u2", {"id": "zlib", "level": 1}) + SEP + zyx + SEP +
+    zlib.compress(ramp(24, 2)))
+put("zarr", "raw_big_i2_forder_slash.seed", zarray([2, 3, 5], [2, 3, 4], ">i2", None, order="F", sep="/") + SEP + zyx + SEP +
+    ramp(24, 2, True))
+put("zarr", "gzip_f4_nan.seed", zarray([2, 2, 3], [2, 2, 2], "<f4", {"id": "gzip", "level": 1}, fill="NaN") + SEP + zyx + SEP +
+    gz(floats(8)))
+put("zarr", "blosc_memcpy_tczyx.seed", zarray([2, 2, 2, 2, 3], [1, 1, 2, 2, 3], "|u1", {"id": "blosc", "cname": "lz4", "clevel": 5,
+                                                                                        "shuffle": 1, "blocksize": 0}, sep="/") +
+    SEP + zattrs("tczyx", [1.0, 1.0, 2.0, 0.5, 0.5], {"channels": [{"label": "a", "color": "FF0000", "window": {"min": 0, "max": 255,
+                                                                                                             "start": 0, "end": 200}},
+                                                                   {"label": "b", "color": "00ff00", "active": False}]}) +
+    SEP + blosc_memcpy(ramp(12), 1))
+put("zarr", "f8_yx.seed", zarray([3, 4], [3, 4], "<f8", None) + SEP + zattrs("yx", [0.5, 0.5]) + SEP + struct.pack("<12d", *range(12)))

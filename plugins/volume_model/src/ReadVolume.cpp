@@ -23,12 +23,15 @@ std::string libraryDirectory()
 }
 
 const char* const volumeExtensions[] = {"nii", "nrrd", "nhdr", "mhd", "mha", "raw", "dat", "tif", "tiff",
-                                       "imgstack", "dcm", "dic", "dicom", "pvm"};
+                                       "imgstack", "dcm", "dic", "dicom", "pvm", "zarr"};
 
-/// The reader for a directory: numbered TIFF slices, other 2D images, else a DICOM series.
+/// The reader for a directory: an OME-Zarr image or zarr array (zarr metadata at its top),
+/// numbered TIFF slices, other 2D images, else a DICOM series.
 std::string directoryReader(const std::string& dir)
 {
     bool images = false, files = false;
+    for (const std::string& name : osgDB::getDirectoryContents(dir))
+        if (name == ".zattrs" || name == ".zgroup" || name == ".zarray") return "zarr";
     for (const std::string& name : osgDB::getDirectoryContents(dir)) {
         if (name == "." || name == "..") continue;
         files = true;
@@ -81,11 +84,12 @@ osg::ref_ptr<Volume> readVolumeFile(const std::string& path, const osgDB::Option
     // Numbered TIFF slices may be named by a pattern ("slices/s*.tif"): the reader expands it.
     const bool pattern = path.find_first_of("*?") != std::string::npos;
     if (!pattern && !osgDB::fileExists(path)) throw std::runtime_error(path + ": no such file");
-    // A directory holds slices: TIFF, other 2D images, or a DICOM series.
+    // A directory holds slices (TIFF, other 2D images, or a DICOM series) or is a zarr image.
     const bool isDirectory = !pattern && osgDB::fileType(path) == osgDB::DIRECTORY;
-    if (isDirectory && volumeFileExtension(path) != "dicom" && !osgDB::getLowerCaseFileExtension(path).empty())
+    const std::string named = volumeFileExtension(path);
+    if (isDirectory && named != "dicom" && named != "zarr" && !osgDB::getLowerCaseFileExtension(path).empty())
         throw std::runtime_error(path + ": is a directory, not a volume file");
-    const std::string ext = isDirectory ? directoryReader(path) : volumeFileExtension(path);
+    const std::string ext = isDirectory && named != "zarr" ? directoryReader(path) : named;
     osgDB::ReaderWriter* rw = osgDB::Registry::instance()->getReaderWriterForExtension(ext);
     if (!rw) throw std::runtime_error(path + ": no volume reader for extension '" + ext + "'");
     if (std::string(rw->className()).rfind("volren", 0) != 0)  // e.g. OSG's own 2D osgdb_tiff, loaded first

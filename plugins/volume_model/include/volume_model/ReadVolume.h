@@ -15,7 +15,7 @@ osg::ref_ptr<Volume> readVolumeFile(const std::string& path, const osgDB::Option
 std::string volumeFileExtension(const std::string& path);
 
 /// Whether a volren volume reader is registered for `path`'s extension, or `path` is a
-/// directory (of TIFF, 2D image or DICOM slices).
+/// directory (of TIFF, 2D image or DICOM slices, or an OME-Zarr image / zarr array).
 bool isVolumeFile(const std::string& path);
 
 /// Adds the folder holding the volren osgDB plugins (next to this library) to OSG's
