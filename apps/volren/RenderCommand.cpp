@@ -53,6 +53,16 @@ int renderCommand(const std::vector<std::string>& args, bool defaultRun)
             "cpu_ms: whole frame; draw_ms: first draw call to glFinish; gpu_ms: GL_TIME_ELAPSED query, "
             "which on Mesa llvmpipe does not include rasterisation (use draw_ms there)";
         stats["composition_keys"] = renderer.volumeScene()->compositionKeys();
+        nlohmann::json bricks = nlohmann::json::array();  // bricked volumes: what their pools hold
+        for (const BrickStatistics& b : renderer.volumeScene()->brickStatistics())
+            bricks.push_back({{"volume", b.volume},
+                              {"level_sampled", b.levelSampled},
+                              {"bricks_resident", b.resident},
+                              {"bricks_constant", b.constant},
+                              {"bricks_missing", b.missing},
+                              {"pool_bytes", b.poolBytes},
+                              {"budget_bytes", b.budgetBytes}});
+        stats["bricked_volumes"] = bricks;
         std::vector<double> cpu, draw, gpu;
         nlohmann::json perFrame = nlohmann::json::array();
         for (const FrameTiming& f : frames) {

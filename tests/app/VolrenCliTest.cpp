@@ -328,6 +328,37 @@ TEST(VolrenCli, SkippingLeavesEveryTraversalsImageOfARealCtBitIdentical)
     }
 }
 
+TEST(VolrenCli, AVolumeOverItsMemoryBudgetIsBrickedAndStatsSayWhatThePoolHolds)
+{
+    // The bonsai (256^3, 8-bit as 16-bit texels on llvmpipe: 32 MiB) within 1 MiB in bricks of
+    // 16 voxels (18^3 texels of 2 bytes: 89 slots): only levels 2 and coarser fit, so the image
+    // is the single texture's at lod 2.
+    VOLREN_REQUIRE_SHARED_DATA();
+    const std::string dir = tempDirectory();
+    const std::string volume = sharedData("ct/bonsai.nii.gz");
+    const std::string common = " --size 96x96 --set texturePrecision=16bit";
+    const CliRun run = volren("render '" + volume + "' -o '" + dir + "/bricked.exr'" + common +
+                              " --set memoryBudgetMB=1 --set brickSize=16 --stats '" + dir + "/stats.json'");
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    ASSERT_EQ(volren("render '" + volume + "' -o '" + dir + "/lod2.exr'" + common + " --set lod=2").exitCode, 0);
+    const nlohmann::json stats = nlohmann::json::parse(std::ifstream(dir + "/stats.json"));
+    EXPECT_NE(stats["composition_keys"][0].get<std::string>().find("VolumeStorage=bricked"), std::string::npos);
+    ASSERT_EQ(stats["bricked_volumes"].size(), 1u) << stats.dump();
+    const nlohmann::json& b = stats["bricked_volumes"][0];
+    EXPECT_EQ(b["level_sampled"], 2);
+    EXPECT_LE(b["pool_bytes"].get<std::size_t>(), std::size_t(1) << 20);
+    EXPECT_GT(b["bricks_resident"].get<std::size_t>(), 8u);
+    EXPECT_EQ(b["bricks_missing"], 16 * 16 * 16 + 8 * 8 * 8) << "levels 0 and 1 left out";
+    const Image bricked = readImage(dir + "/bricked.exr"), level2 = readImage(dir + "/lod2.exr");
+    ASSERT_EQ(bricked.pixels.size(), level2.pixels.size());
+    float worst = 0.0f, covered = 0.0f;
+    for (std::size_t i = 0; i < bricked.pixels.size(); ++i) worst = std::max(worst, std::abs(bricked.pixels[i] - level2.pixels[i]));
+    for (int y = 0; y < 96; ++y)
+        for (int x = 0; x < 96; ++x) covered += level2.at(x, y, 3) > 0.05f;
+    EXPECT_LE(worst, 1e-4f);
+    EXPECT_GT(covered, 500.0f);
+}
+
 TEST(VolrenCli, InfoPrintsGeometryAndValues)
 {
     VOLREN_REQUIRE_SHARED_DATA();

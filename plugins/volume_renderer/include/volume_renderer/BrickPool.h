@@ -10,6 +10,7 @@
 #include <osg/Texture3D>
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 namespace volren {
@@ -71,6 +72,18 @@ BrickResidency chooseResidency(const BrickLayout& layout, const std::vector<Macr
 /// texture of at most `maxTextureSize` texels per axis.
 osg::Vec3i poolSlotsFor(std::size_t wanted, int slotTexels, int maxTextureSize);
 
+/// What a bricked volume holds (volren render --stats).
+struct BrickStatistics
+{
+    std::string volume;            ///< the Volume's name (its file)
+    int levelSampled = 0;          ///< the finest level held whole: the level the rays read
+    std::size_t resident = 0;      ///< bricks in the pool (all levels)
+    std::size_t constant = 0;      ///< bricks of one value (no slot)
+    std::size_t missing = 0;       ///< bricks of finer levels asked for that the budget left out
+    std::size_t poolBytes = 0;     ///< GPU bytes of the pool
+    std::size_t budgetBytes = 0;   ///< the budget the pool was made within
+};
+
 /// A volume in bricks: the pool and page table textures and what they hold.
 struct BrickedVolume
 {
@@ -78,6 +91,9 @@ struct BrickedVolume
     osg::ref_ptr<osg::Texture3D> pool;       ///< the volume's texel format (16-bit for `wide` 8-bit)
     osg::ref_ptr<osg::Texture3D> pageTable;  ///< RGBA32F, nearest, read with texelFetch
     std::size_t poolBytes = 0;               ///< GPU bytes of the pool texture
+    std::size_t budgetBytes = 0;             ///< the budget it was made within
+    /// Its statistics, named `volume`.
+    BrickStatistics statistics(const std::string& volume) const;
 };
 
 /// Block (0, 0) of `volume` from mip level `firstLevel` down, in bricks of `brickSize` voxels,

@@ -1,4 +1,5 @@
 #pragma once
+#include <volume_renderer/BrickPool.h>
 #include <volume_renderer/CompositionPolicy.h>
 #include <volume_renderer/PassSettings.h>
 #include <volume_renderer/ShaderCompositor.h>
@@ -60,6 +61,8 @@ public:
     /// Volumes and multi-volume sets the last cull traversal left undrawn because their occupancy
     /// grids show that no sample of theirs can be visible (a TF that hides everything).
     std::size_t hiddenVolumeCount() const;
+    /// What each bricked volume the last cull traversal drew holds in its pool.
+    std::vector<BrickStatistics> brickStatistics() const;
 
 protected:
     ~VolumeScene() override;

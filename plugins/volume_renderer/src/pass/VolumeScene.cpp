@@ -167,6 +167,12 @@ std::vector<std::string> VolumeScene::compositionKeys() const
     return _state->lastKeys;
 }
 
+std::vector<BrickStatistics> VolumeScene::brickStatistics() const
+{
+    std::lock_guard<std::mutex> lock(_mutex);
+    return _state->textures.brickStatistics(_state->cull);
+}
+
 std::size_t VolumeScene::hiddenVolumeCount() const
 {
     std::lock_guard<std::mutex> lock(_mutex);

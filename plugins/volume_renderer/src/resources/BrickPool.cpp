@@ -147,6 +147,18 @@ void copyBrick(const Volume& level, const osg::Vec3i& b, int brickSize, const os
 
 }  // namespace
 
+BrickStatistics BrickedVolume::statistics(const std::string& volume) const
+{
+    BrickStatistics s{.volume = volume,
+                      .levelSampled = std::max(residency.firstLevel, residency.finestComplete),
+                      .resident = residency.resident.size(),
+                      .constant = residency.constant,
+                      .poolBytes = poolBytes,
+                      .budgetBytes = budgetBytes};
+    for (int level = residency.firstLevel; level < s.levelSampled; ++level) s.missing += residency.layout.brickCount(level);
+    return s;
+}
+
 BrickedVolume makeBrickedVolume(const Volume& volume, const std::vector<osg::ref_ptr<osg::Image>>& levelImages,
                                 int firstLevel, int brickSize, std::size_t budgetBytes, int maxTextureSize, bool wide)
 {
@@ -192,6 +204,7 @@ BrickedVolume makeBrickedVolume(const Volume& volume, const std::vector<osg::ref
     }
     out.pool = makeVolumeTexture(volume, wide, pool.get());
     out.poolBytes = std::size_t(pool->s()) * pool->t() * pool->r() * texelBytes;
+    out.budgetBytes = budgetBytes;
 
     const osg::Vec3i& t = layout.tableSize;
     osg::ref_ptr<osg::Image> table = new osg::Image;

@@ -104,6 +104,14 @@ const BrickedVolume& TextureCache::bricked(const Volume& volume, int level, int 
     return b.bricks;
 }
 
+std::vector<BrickStatistics> TextureCache::brickStatistics(unsigned int cull) const
+{
+    std::vector<BrickStatistics> out;
+    for (const auto& [key, b] : _bricks)
+        if (b.lastCull == cull) out.push_back(b.bricks.statistics(b.volume->getName()));
+    return out;
+}
+
 osg::Texture* TextureCache::table(const TransferFunction& transfer, bool premultiplied, unsigned int cull)
 {
     auto& gl = _tables[{&transfer, premultiplied}];

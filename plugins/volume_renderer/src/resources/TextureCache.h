@@ -43,6 +43,8 @@ public:
     /// textures of at most `largest` texels per axis (8-bit data in 16-bit texels when `wide`).
     const BrickedVolume& bricked(const Volume& volume, int level, int brickSize, std::size_t budget, int largest, bool wide,
                                  unsigned int cull);
+    /// Statistics of the bricked volumes used in cull `cull`.
+    std::vector<BrickStatistics> brickStatistics(unsigned int cull) const;
     /// Occupancy grids built so far (each TF or classification change builds one).
     unsigned int occupancyBuilds() const { return _occupancyBuilds; }
     /// Frees what the last few cull traversals before `cull` did not use.
