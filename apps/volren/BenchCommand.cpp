@@ -65,6 +65,7 @@ std::vector<BenchConfig> defaultMatrix()
     add("lod", {"1", "2"});
     add("lodByDistance", {"on"});
     add("texturePrecision", {"native", "16bit"});
+    add("volumestorage", {"bricked"});  // the cost of the page table lookup when a volume is bricked
     add("jitter", {"null", "texture"});
     add("classification", {"premultiplied"});
     for (const char* p : {"8bit", "16bit", "float"}) m.push_back({std::string("precision=") + p, {}, p});
