@@ -4,6 +4,7 @@
 
 #include <blosc.h>
 
+#include <bit>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -15,14 +16,6 @@ namespace {
 
 using zarrjson::Json;
 using zarrjson::shortText;
-
-bool hostIsBigEndian()
-{
-    const std::uint16_t one = 1;
-    std::uint8_t first;
-    std::memcpy(&first, &one, 1);
-    return first == 0;
-}
 
 std::string listText(const std::vector<std::uint64_t>& values)
 {
@@ -156,7 +149,7 @@ bool ZarrDataType::converted() const
 
 bool ZarrDataType::needsSwap() const
 {
-    return size > 1 && (byteOrder == '>') != hostIsBigEndian();
+    return size > 1 && (byteOrder == '>') != (std::endian::native == std::endian::big);
 }
 
 std::uint64_t ZarrArrayMetadata::elementCount() const

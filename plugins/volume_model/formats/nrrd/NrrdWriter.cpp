@@ -2,6 +2,7 @@
 
 #include <zlib.h>
 
+#include <bit>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -24,14 +25,6 @@ const char* nrrdTypeName(VoxelType type)
     case VoxelType::Float32: return "float";
     }
     return "?";
-}
-
-bool hostIsBigEndian()
-{
-    const std::uint16_t one = 1;
-    std::uint8_t first;
-    std::memcpy(&first, &one, 1);
-    return first == 0;
 }
 
 struct FileCloser
@@ -89,7 +82,7 @@ void writeNrrd(const Volume& volume, const std::string& path, bool gzip)
     header << " " << s.x() << " " << s.y() << " " << s.z() << "\nkinds:";
     if (channels > 1) header << " vector";
     header << " domain domain domain\n";
-    if (voxelSize(volume.type()) > 1) header << "endian: " << (hostIsBigEndian() ? "big" : "little") << "\n";
+    if (voxelSize(volume.type()) > 1) header << "endian: " << ((std::endian::native == std::endian::big) ? "big" : "little") << "\n";
     header << "encoding: " << (gzip ? "gzip" : "raw") << "\n";
     if (volume.rescaleSlope() != 1.0 || volume.rescaleIntercept() != 0.0)
         header << "volren_rescale:=" << volume.rescaleSlope() << " " << volume.rescaleIntercept() << "\n";

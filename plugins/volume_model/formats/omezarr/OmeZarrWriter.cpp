@@ -9,6 +9,7 @@
 #include <osgDB/FileNameUtils>
 #include <nlohmann/json.hpp>
 
+#include <bit>
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -26,20 +27,12 @@ using Json = nlohmann::json;
 
 namespace {
 
-bool hostIsBigEndian()
-{
-    const std::uint16_t one = 1;
-    std::uint8_t first;
-    std::memcpy(&first, &one, 1);
-    return first == 0;
-}
-
 ZarrDataType dataTypeOf(VoxelType type)
 {
     ZarrDataType t;
     t.size = int(voxelSize(type));
     t.kind = type == VoxelType::Float32 ? 'f' : (type == VoxelType::Int8 || type == VoxelType::Int16) ? 'i' : 'u';
-    t.byteOrder = t.size == 1 ? '|' : hostIsBigEndian() ? '>' : '<';
+    t.byteOrder = t.size == 1 ? '|' : (std::endian::native == std::endian::big) ? '>' : '<';
     return t;
 }
 

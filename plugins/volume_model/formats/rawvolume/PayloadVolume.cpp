@@ -2,6 +2,7 @@
 
 #include <osg/Notify>
 
+#include <bit>
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
@@ -9,14 +10,6 @@
 namespace volren::rawvolume {
 
 namespace {
-
-bool hostIsBigEndian()
-{
-    const std::uint16_t one = 1;
-    std::uint8_t first;
-    std::memcpy(&first, &one, 1);
-    return first == 0;
-}
 
 /// Int32/UInt32 → float32 in place (same width); refuses values that float32 would round.
 template <typename T>
@@ -66,7 +59,7 @@ osg::ref_ptr<Volume> readPayloadVolume(const PayloadLayout& layout, const osgDB:
         throw std::runtime_error(name + ": not enough memory for " + std::to_string(count) + " voxels");
     }
     readPayload(layout.parts, voxels.data(), bytes, name, options);
-    if (layout.bigEndian != hostIsBigEndian()) swapBytes(voxels.data(), std::size_t(count), width);
+    if (layout.bigEndian != (std::endian::native == std::endian::big)) swapBytes(voxels.data(), std::size_t(count), width);
     if (layout.type == FileVoxelType::Int32) integersToFloat<std::int32_t>(voxels.data(), std::size_t(count), name, "int32");
     if (layout.type == FileVoxelType::UInt32) integersToFloat<std::uint32_t>(voxels.data(), std::size_t(count), name, "uint32");
 
