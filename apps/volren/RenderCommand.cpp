@@ -9,6 +9,7 @@
 #include <osgDB/FileUtils>
 
 #include <algorithm>
+#include <chrono>
 #include <fstream>
 #include <iostream>
 
@@ -40,6 +41,16 @@ int renderCommand(const std::vector<std::string>& args, bool defaultRun)
 
     std::vector<FrameTiming> frames;
     for (int i = 0; i < options.frames; ++i) frames.push_back(renderer.renderFrame());
+    // Streaming bricks (--set streamBricks=on): frames go on until every brick they plan is in
+    // its pool, so the image written is the converged one, as without streaming.
+    std::vector<FrameTiming> streamed;
+    const auto streamStart = std::chrono::steady_clock::now();
+    if (VolumeScene* volumes = renderer.volumeScene(); volumes && volumes->pass.streamBricks)
+        while (volumes->pendingBricks() > 0) {
+            volumes->waitForBricks(1.0);
+            streamed.push_back(renderer.renderFrame());
+        }
+    const double streamMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - streamStart).count();
     writeImage(*renderer.image(), options.output);
 
     if (!options.statsFile.empty()) {
@@ -60,9 +71,16 @@ int renderCommand(const std::vector<std::string>& args, bool defaultRun)
                               {"bricks_resident", b.resident},
                               {"bricks_constant", b.constant},
                               {"bricks_missing", b.missing},
+                              {"bricks_pending", b.pending},
+                              {"bricks_loaded", b.loaded},
+                              {"bricks_uploaded", b.uploaded},
+                              {"bricks_evicted", b.evicted},
                               {"pool_bytes", b.poolBytes},
-                              {"budget_bytes", b.budgetBytes}});
+                              {"budget_bytes", b.budgetBytes},
+                              {"source_ram_bytes", b.sourceBytes}});
         stats["bricked_volumes"] = bricks;
+        stats["streamed_frames"] = streamed.size();  // frames after --frames until the bricks converged
+        stats["streamed_ms"] = streamMs;
         std::vector<double> cpu, draw, gpu;
         nlohmann::json perFrame = nlohmann::json::array();
         for (const FrameTiming& f : frames) {

@@ -75,13 +75,17 @@ int viewCommand(const std::vector<std::string>& args)
     osg::ref_ptr<VolumeScene> root = loadScene(options);
     // Interactive views sample far volumes coarser (and keep the mip chain the interaction
     // quality's coarser level needs), unless --set says otherwise.
-    const bool lodSet = std::any_of(options.settings.begin(), options.settings.end(), [](const auto& kv) {
-        std::string key = kv.first;  // setting keys are case-insensitive
-        std::transform(key.begin(), key.end(), key.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-        return key == "lodbydistance";
-    });
-    if (!lodSet)
+    auto isSet = [&options](const std::string& name) {
+        return std::any_of(options.settings.begin(), options.settings.end(), [&name](const auto& kv) {
+            std::string key = kv.first;  // setting keys are case-insensitive
+            std::transform(key.begin(), key.end(), key.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+            return key == name;
+        });
+    };
+    if (!isSet("lodbydistance"))
         for (VolumeNode* n : findVolumeNodes(*root)) n->settings.lodByDistance = true;
+    // Bricked volumes stream in: frames never wait for the loaders, detail arrives over frames.
+    if (!isSet("streambricks")) root->pass.streamBricks = true;
     if (options.samples > 1) osg::DisplaySettings::instance()->setNumMultiSamples(options.samples);  // an MSAA window
     osgViewer::Viewer viewer;
     viewer.setThreadingModel(osgViewer::ViewerBase::SingleThreaded);
@@ -101,7 +105,7 @@ int viewCommand(const std::vector<std::string>& args)
         for (const char* slot : {"RayTraversal", "Reconstruction", "Gradient", "Illumination", "Acceleration"})
             choices[slot] = root->policy().choosable(slot);  // default first
         panel = std::make_unique<RenderSettingsPanel>(node, choices);
-        overlay = new ImGuiOverlay([&editor, &panel] {
+        overlay = new ImGuiOverlay([&editor, &panel, scene = root.get()] {
             ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
             editor->draw();
             ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x - 410, 10), ImGuiCond_FirstUseEver);
@@ -110,6 +114,8 @@ int viewCommand(const std::vector<std::string>& args)
             ImGui::Begin("frame", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize);
             ImGui::Text("%.1f ms/frame   e: editor  c: screenshot  s: stats  Esc: quit",
                         1000.0f / std::max(ImGui::GetIO().Framerate, 1e-3f));
+            if (const std::size_t pending = scene->pendingBricks())  // detail streaming in
+                ImGui::Text("loading detail: %zu bricks to go", pending);
             ImGui::End();
         });
         root->addChild(overlay->node());
@@ -129,10 +135,13 @@ int viewCommand(const std::vector<std::string>& args)
         setUpCamera(*viewer.getCamera(), *root, options, double(options.width) / options.height);
         viewer.setCameraManipulator(nullptr);
         osg::ref_ptr<Grab> grab = new Grab;
-        for (int i = 0; i < std::max(options.frames, 3); ++i) {
-            if (i + 1 == std::max(options.frames, 3)) viewer.getCamera()->setFinalDrawCallback(grab.get());
+        for (int i = 0; i < std::max(options.frames, 3); ++i) viewer.frame();
+        while (root->pendingBricks() > 0) {  // the picture once the bricks have streamed in
+            root->waitForBricks(1.0);
             viewer.frame();
         }
+        viewer.getCamera()->setFinalDrawCallback(grab.get());
+        viewer.frame();
         writeImage(*grab->image, options.screenshot);
         std::cout << "volren view: wrote " << options.screenshot << std::endl;
         return 0;

@@ -49,7 +49,7 @@ std::vector<MacrocellGrid> syntheticRanges(const BrickLayout& layout)
     return out;
 }
 
-TEST(BrickResidency, ABudgetFillsWholeLevelsFromTheCoarsestAndConstantBricksTakeNoSlot)
+TEST(BrickPlan, ABudgetFillsWholeLevelsFromTheCoarsestAndConstantBricksTakeNoSlot)
 {
     const BrickLayout layout = brickLayout({40, 24, 16}, 8);  // levels: 5x3x2, 3x2x1, 2x1x1, 1x1x1, ...
     const std::vector<MacrocellGrid> ranges = syntheticRanges(layout);
@@ -60,30 +60,45 @@ TEST(BrickResidency, ABudgetFillsWholeLevelsFromTheCoarsestAndConstantBricksTake
     };
     std::size_t coarse = 0;
     for (int level = 1; level < int(layout.levels.size()); ++level) coarse += slotsOf(level);
-    // Room for every level but 0: level 1 is the finest complete one, level 0 all missing.
-    const BrickResidency r = chooseResidency(layout, ranges, 0, {4, 4, 4}, coarse + slotsOf(0) - 1);
-    EXPECT_EQ(r.finestComplete, 1);
-    EXPECT_EQ(r.resident.size(), coarse);
-    const osg::Vec3i& t = layout.tableSize;
-    auto entry = [&](int level, int x, int y, int z) {
-        const int tz = z + layout.levels[std::size_t(level)].tableZ;
-        return &r.pageTable[((std::size_t(tz) * t.y() + y) * t.x() + x) * 4];
-    };
-    for (int x = 0; x < 5; ++x) EXPECT_EQ(entry(0, x, 0, 0)[3], float(PageEntry::Missing));
-    EXPECT_EQ(entry(1, 1, 1, 0)[3], float(PageEntry::Constant));
-    EXPECT_EQ(entry(1, 1, 1, 0)[0], 0.25f);
-    // Slots are handed out in order, x fastest over the pool's 4 x 4 x 4 slots.
-    const float* last = entry(1, 2, 0, 0);
-    EXPECT_EQ(last[3], float(PageEntry::Resident));
-    const std::size_t slot = std::size_t(last[0] + 4 * last[1] + 16 * last[2]);
-    ASSERT_LT(slot, r.resident.size());
-    EXPECT_EQ(r.resident[slot].first, 1);
-    EXPECT_EQ(r.resident[slot].second, osg::Vec3i(2, 0, 0));
+    // Room for every level but 0: level 1 is the finest whole one, level 0 left out.
+    const BrickPlan plan = planBricks(layout, ranges, 0, coarse + slotsOf(0) - 1, true);
+    EXPECT_EQ(plan.finest, 1);
+    EXPECT_EQ(plan.slotted.size(), coarse);
+    for (const BrickId& id : plan.slotted) EXPECT_GE(id.level, 1);
+    // Coarsest level first, so loaders fill the levels a ray falls back to before finer ones.
+    EXPECT_EQ(plan.slotted.front().level, int(layout.levels.size()) - 1);
+    EXPECT_EQ(plan.slotted.back().level, 1);
+    // The constant brick (1, 1, 0) of level 1 takes no slot: its page entry holds its value.
+    bool found = false;
+    for (const auto& [id, value] : plan.constant)
+        if (id == BrickId{1, {1, 1, 0}}) found = value == 0.25f;
+    EXPECT_TRUE(found);
     // One more slot holds level 0 too.
-    EXPECT_EQ(chooseResidency(layout, ranges, 0, {4, 4, 4}, coarse + slotsOf(0)).finestComplete, 0);
-    // Asked for level 2 only: levels 0 and 1 stay missing however large the pool.
-    EXPECT_EQ(chooseResidency(layout, ranges, 2, {8, 8, 8}, 512).finestComplete, 2);
-    EXPECT_THROW(chooseResidency(layout, ranges, 0, {1, 1, 1}, 0), std::invalid_argument);
+    EXPECT_EQ(planBricks(layout, ranges, 0, coarse + slotsOf(0), true).finest, 0);
+    // Asked for level 2 only: levels 0 and 1 stay out however large the pool.
+    EXPECT_EQ(planBricks(layout, ranges, 2, 512, true).finest, 2);
+    EXPECT_THROW(planBricks(layout, ranges, 0, 0, true), std::invalid_argument);
+    // Unknown ranges (a lazy file's level not read yet): every brick needs a slot.
+    std::vector<MacrocellGrid> unknown = ranges;
+    unknown[1] = MacrocellGrid{};
+    EXPECT_EQ(planBricks(layout, unknown, 0, coarse + slotsOf(0), true).finest, 1);
+}
+
+TEST(BrickPlan, BricksOutOfViewAreLeftOutSoAFinerLevelFits)
+{
+    // Seeing only bricks with x == 0, the pool holds level 0's visible bricks where it could not
+    // hold all of them; the coarsest level stays whole.
+    const BrickLayout layout = brickLayout({40, 24, 16}, 8);
+    const std::vector<MacrocellGrid> ranges = syntheticRanges(layout);
+    const std::size_t all = planBricks(layout, ranges, 0, 100000, true).slotted.size();
+    auto leftColumn = [](int, const osg::Vec3i& b) { return b.x() == 0; };
+    const BrickPlan seen = planBricks(layout, ranges, 0, 100000, true, leftColumn);
+    EXPECT_EQ(seen.finest, 0);
+    EXPECT_LT(seen.slotted.size(), all);
+    for (const BrickId& id : seen.slotted)
+        EXPECT_TRUE(id.brick.x() == 0 || id.level == int(layout.levels.size()) - 1) << id.level;
+    EXPECT_EQ(planBricks(layout, ranges, 0, seen.slotted.size(), true, leftColumn).finest, 0);
+    EXPECT_GT(planBricks(layout, ranges, 0, seen.slotted.size(), true).finest, 0);
 }
 
 TEST(BrickResidency, PoolSlotsStayWithinTheLargestTexture)
@@ -181,6 +196,82 @@ TEST_F(BrickedVolume, AVolumeOverItsBudgetIsBrickedAtTheFinestLevelThatFits)
     EXPECT_EQ(storageOf(largeScene.get()), "bricked");
     EXPECT_GT(covered(over), 300);
     EXPECT_LE(largeScene->textureBytes(), (std::size_t(5) << 20) / 4) << "a pool of at most 1 MiB, tables and grids";
+}
+
+TEST_F(BrickedVolume, StreamedFramesAreCompleteAtSomeLevelAndConvergeToTheWaitingFrame)
+{
+    // Streaming (volren view): a frame draws what is in the pool, at most uploadBudgetMB of
+    // bricks more per frame, with the coarsest levels there from the first frame, so no frame has
+    // a hole; the frames converge to the image of a frame that waits for its bricks.
+    osg::ref_ptr<Volume> volume = field();
+    osg::ref_ptr<TransferFunction> tf = transferFunction(
+        {{0, {0, 0, 0, 0}}, {60, {0.2f, 0.3f, 0.8f, 0.05f}}, {160, {1.0f, 0.8f, 0.5f, 0.4f}}, {255, {1, 1, 1, 0.8f}}}, 0, 255);
+    osg::ref_ptr<VolumeNode> node = volumeNode(volume.get(), tf.get());
+    node->settings.brickSize = 4;  // 10^3 bricks at level 0, 6^3 bytes each
+    node->settings.functions["VolumeStorage"] = "bricked";
+    const Pixels waited = oblique(sceneOf(node.get()).get());
+
+    osg::ref_ptr<VolumeScene> scene = sceneOf(node.get());
+    scene->pass.streamBricks = true;
+    const std::size_t perFrame = 25;
+    scene->pass.uploadBudgetMB = perFrame * 216 / 1048576.0;
+    const Pixels first = oblique(scene.get());
+    ASSERT_EQ(scene->brickStatistics().size(), 1u);
+    const BrickStatistics atFirst = scene->brickStatistics().front();
+    EXPECT_GT(scene->pendingBricks(), 100u) << "the first frame cannot hold level 0";
+    EXPECT_GT(maxDifference(first, waited), 1e-3);
+    EXPECT_EQ(covered(first), covered(waited)) << "no holes: every pixel the volume covers has a value";
+    std::size_t uploaded = atFirst.uploaded;
+    int frames = 1;
+    Pixels last = first;
+    for (; scene->pendingBricks() > 0 && frames < 2000; ++frames) {
+        scene->waitForBricks(1.0);
+        last = oblique(scene.get());
+        const BrickStatistics now = scene->brickStatistics().front();
+        EXPECT_LE(now.uploaded - uploaded, perFrame + 1) << "frame " << frames;
+        uploaded = now.uploaded;
+        EXPECT_EQ(covered(last), covered(waited)) << "frame " << frames;
+    }
+    EXPECT_EQ(scene->pendingBricks(), 0u);
+    EXPECT_GT(frames, 10) << "at most " << perFrame << " bricks a frame";
+    EXPECT_LE(maxDifference(last, waited), 1e-5) << "converged after " << frames << " frames";
+}
+
+TEST_F(BrickedVolume, ABudgetTooSmallForTheVolumeHoldsTheFinestLevelOfWhatTheViewSees)
+{
+    // Close to one corner the view sees a few level-0 bricks: a pool that cannot hold level 0
+    // whole holds those, and the image is the single texture's; seen whole, the same budget
+    // falls back to a coarser level.
+    osg::ref_ptr<Volume> volume = bytes([](int x, int y, int z) { return (x * 37 + y * 91 + z * 53) % 200 + 30; }, 96);
+    osg::ref_ptr<TransferFunction> tf =
+        transferFunction({{0, {0, 0, 0, 0}}, {100, {0.3f, 0.5f, 0.9f, 0.02f}}, {255, {1, 0.9f, 0.6f, 0.2f}}}, 0, 255);
+    osg::ref_ptr<VolumeNode> node = volumeNode(volume.get(), tf.get());
+    osg::ref_ptr<VolumeScene> scene = sceneOf(node.get());
+    node->settings.brickSize = 4;
+    node->settings.texturePrecision = "16bit";
+    const osg::Vec3d eye(80, -80, 65);
+    auto corner = [&] {
+        const osg::Matrixd v = osg::Matrixd::lookAt(eye, osg::Vec3d(45, -45, 45), osg::Vec3d(0, 0, 1));
+        return render(scene.get(), 48, 40, v, osg::Matrixd::perspective(8, 1.2, 0.05, 300), osg::Vec3(0.1f, 0.2f, 0.3f));
+    };
+    node->settings.functions["VolumeStorage"] = "texture";
+    const Pixels single = corner();
+    node->settings.functions["VolumeStorage"] = "bricked";
+    node->settings.memoryBudgetMB = 1;  // 6^3 16-bit texels a slot: 2427 slots for level 0's 13824 bricks
+    const Pixels bricked = corner();
+    ASSERT_EQ(scene->brickStatistics().size(), 1u);
+    EXPECT_EQ(scene->brickStatistics().front().levelSampled, 0);
+    EXPECT_GT(covered(single), 300);
+    EXPECT_LE(maxDifference(single, bricked), 1e-4);
+    // Seen whole, the pool evicts corner bricks of level 0 for the coarser level it now holds,
+    // and the image is the single texture's at that level.
+    const Pixels whole = oblique(scene.get());
+    const BrickStatistics stats = scene->brickStatistics().front();
+    EXPECT_GT(stats.levelSampled, 0) << "the whole volume does not fit at level 0";
+    EXPECT_GT(stats.evicted, 0u);
+    node->settings.functions["VolumeStorage"] = "texture";
+    node->settings.lod = stats.levelSampled;
+    EXPECT_LE(maxDifference(oblique(scene.get()), whole), 1e-4);
 }
 
 }  // namespace

@@ -44,8 +44,35 @@ Volume::Volume(const Volume& other, const osg::CopyOp& copyop)
       _spacing(other._spacing),
       _slope(other._slope),
       _intercept(other._intercept),
-      _data(other._data)
+      _data(other._data),
+      _fullResolution(other._fullResolution),
+      _fullResolutionLevel(other._fullResolutionLevel)
 {
+}
+
+void Volume::setFullResolution(const BrickSource* source, int level)
+{
+    if (source) {
+        if (level < 0 || level >= source->levelCount())
+            throw std::invalid_argument(source->file() + ": level " + std::to_string(level) + " is not one of its " +
+                                        std::to_string(source->levelCount()) + " levels");
+        if (source->levelDims(level) != _dims || source->type() != _type)
+            throw std::invalid_argument(source->file() + ": level " + std::to_string(level) +
+                                        " differs from the volume in memory in size or voxel type");
+        const osg::Vec3d full = osg::componentMultiply(source->spacing(), osg::Vec3d(source->levelDims(0).x(), source->levelDims(0).y(), source->levelDims(0).z()));
+        const osg::Vec3d mine = worldSize();
+        for (int a = 0; a < 3; ++a)
+            if (std::abs(full[a] - mine[a]) > 1e-6 * std::max(full[a], mine[a]))
+                throw std::invalid_argument(source->file() + ": level " + std::to_string(level) +
+                                            " covers another box than level 0");
+    }
+    _fullResolution = source;
+    _fullResolutionLevel = source ? level : 0;
+}
+
+osg::Vec3i Volume::fullDims() const
+{
+    return _fullResolution ? _fullResolution->levelDims(0) : _dims;
 }
 
 std::uint64_t Volume::checkedVoxelCount(const osg::Vec3i& dims, std::uint64_t blocks)
@@ -135,7 +162,8 @@ void Volume::setSpacing(const osg::Vec3d& spacing)
 
 double Volume::minSpacing() const
 {
-    return std::min({_spacing.x(), _spacing.y(), _spacing.z()});
+    const osg::Vec3d s = _fullResolution ? _fullResolution->spacing() : _spacing;
+    return std::min({s.x(), s.y(), s.z()});
 }
 
 osg::Vec3d Volume::worldSize() const

@@ -1,8 +1,10 @@
 #pragma once
+#include <volume_model/BrickSource.h>
 #include <volume_model/Histogram.h>
 #include <volume_model/VoxelType.h>
 
 #include <osg/Object>
+#include <osg/ref_ptr>
 #include <osg/Vec3d>
 #include <osg/Vec3i>
 
@@ -57,7 +59,8 @@ public:
     const osg::Vec3d& spacing() const { return _spacing; }
     /// Sets the spacing; throws std::invalid_argument unless all components are positive and finite.
     void setSpacing(const osg::Vec3d& spacing);
-    /// Smallest component of the spacing: the reference segment length of TF opacity.
+    /// Smallest component of the spacing (of the full resolution for a volume opened lazily):
+    /// the reference segment length of TF opacity and the base of the sample distance.
     double minSpacing() const;
     /// World size of the whole box: dims * spacing.
     osg::Vec3d worldSize() const;
@@ -84,6 +87,19 @@ public:
     /// File this volume was read from (empty when built in memory).
     std::string sourceFile;
 
+    /// Where the finer levels of a volume opened lazily live (files larger than the RAM budget):
+    /// this Volume's voxels are then level `fullResolutionLevel()` of the source, a preview that
+    /// statistics, histograms and the CPU reference use, while the renderer reads bricks of every
+    /// level from the source. Null for a volume held whole in memory.
+    const BrickSource* fullResolution() const { return _fullResolution.get(); }
+    /// Which level of fullResolution() these voxels are (0 for a volume held whole).
+    int fullResolutionLevel() const { return _fullResolutionLevel; }
+    /// Attaches `source` whose level `level` these voxels are; throws std::invalid_argument when
+    /// the source's level dims, type or world size disagree with this volume's.
+    void setFullResolution(const BrickSource* source, int level);
+    /// Voxels along x, y, z at full resolution (the source's level 0, or dims()).
+    osg::Vec3i fullDims() const;
+
     /// Marks voxels or mapping as changed: drops cached statistics, bumps the modified count.
     void dirty();
     /// Incremented on every change; the renderer re-uploads when it differs from its copy.
@@ -100,6 +116,8 @@ private:
     double _intercept = 0.0;
     std::vector<std::uint8_t> _data;
     unsigned int _modifiedCount = 0;
+    osg::ref_ptr<const BrickSource> _fullResolution;
+    int _fullResolutionLevel = 0;
 
     struct Statistics
     {

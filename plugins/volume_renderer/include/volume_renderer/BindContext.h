@@ -1,5 +1,7 @@
 #pragma once
 #include <osg/Matrixd>
+
+#include <optional>
 #include <osg/StateSet>
 #include <osg/Texture>
 #include <osg/Vec4d>
@@ -85,6 +87,8 @@ struct BindContext
     /// Texture of a volume (shared per Volume); `nearest` selects nearest-voxel filtering.
     std::function<osg::Texture*(const Volume&, bool nearest)> volumeTexture = {};
     const BrickedVolume* bricks = nullptr;  ///< the volume's bricks when a composition asks for BrickPool
+    /// Volume texture space -> clip space of the camera culling it (bricks outside are not loaded).
+    std::optional<osg::Matrixd> textureToClip = {};
     /// Size of the box the proxy draws; zero means the volume's own box (a multi-volume set's
     /// program draws the union of its members' boxes).
     osg::Vec3d boxSize = {};

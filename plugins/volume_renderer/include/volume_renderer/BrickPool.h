@@ -10,6 +10,7 @@
 #include <osg/Texture3D>
 
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -46,27 +47,48 @@ enum class PageEntry
     Constant = 2,  ///< x: the one texel value of the whole brick and its border (never resident)
 };
 
-/// Which bricks the pool holds.
-struct BrickResidency
+/// The layout of levels of `levelDims` (finest first; each level covering the same box, as a
+/// BrickSource's levels) in bricks of `brickSize` voxels; throws std::invalid_argument for a
+/// brick size below 2 or no levels.
+BrickLayout brickLayout(const std::vector<osg::Vec3i>& levelDims, int brickSize);
+
+/// A brick of one level.
+struct BrickId
 {
-    BrickLayout layout;
-    int firstLevel = 0;            ///< the finest level asked for (the node's level of detail)
-    int finestComplete = -1;       ///< finest level whose bricks are all resident or constant
-    osg::Vec3i slots;              ///< pool slots along x, y, z (a slot is brickSize + 2 texels wide)
-    std::vector<float> pageTable;  ///< RGBA per entry, layout.tableSize texels, x fastest
-    /// Per pool slot in use: the level and brick it holds.
-    std::vector<std::pair<int, osg::Vec3i>> resident;
-    std::size_t constant = 0;  ///< bricks of the levels made complete that need no slot
+    int level = 0;
+    osg::Vec3i brick;
+    bool operator<(const BrickId& o) const
+    {
+        return level != o.level ? level < o.level
+               : brick.z() != o.brick.z() ? brick.z() < o.brick.z()
+               : brick.y() != o.brick.y() ? brick.y() < o.brick.y()
+                                          : brick.x() < o.brick.x();
+    }
+    bool operator==(const BrickId& o) const { return level == o.level && brick == o.brick; }
 };
 
-/// Fills a pool of `capacity` slots (arranged as `slots`) from the coarsest level to
-/// `firstLevel`, a level at a time while all its non-constant bricks fit; `ranges[level]` holds
-/// each brick's texel range with its border (a MacrocellGrid with cells of brickSize and an
-/// apron of 1). With `constantBricks`, a brick of one value takes no slot (its page entry holds
-/// the value). Deterministic: the same inputs give the same pool. Throws std::invalid_argument
-/// when not even the coarsest level fits.
-BrickResidency chooseResidency(const BrickLayout& layout, const std::vector<MacrocellGrid>& ranges, int firstLevel,
-                               const osg::Vec3i& slots, std::size_t capacity, bool constantBricks = true);
+/// Which bricks a frame wants in the pool.
+struct BrickPlan
+{
+    int firstLevel = 0;  ///< the finest level asked for (the node's level of detail)
+    int finest = -1;     ///< finest level whose wanted bricks all fit: the level the rays sample
+    std::vector<BrickId> slotted;  ///< bricks that need a pool slot, coarsest level first
+    /// Bricks of one value (no slot; the page entry holds the texel value).
+    std::vector<std::pair<BrickId, float>> constant;
+};
+
+/// Whether a brick of a level may be seen (the view's frustum); every brick when empty.
+using BrickVisibility = std::function<bool(int level, const osg::Vec3i& brick)>;
+
+/// Plans a pool of `capacity` slots from the coarsest level to `firstLevel`, a level at a time
+/// while all of its visible bricks that need a slot fit (the coarsest level is wanted whole, so a
+/// sample anywhere finds a value). `ranges[level]` holds each brick's texel range with its border
+/// (a MacrocellGrid with cells of brickSize and an apron of 1), or is empty where unknown (a lazy
+/// source's level not in memory: every brick needs a slot until loaded). With `constantBricks`,
+/// a brick of one value takes no slot. Deterministic. Throws std::invalid_argument when not even
+/// the coarsest level fits.
+BrickPlan planBricks(const BrickLayout& layout, const std::vector<MacrocellGrid>& ranges, int firstLevel,
+                     std::size_t capacity, bool constantBricks, const BrickVisibility& visible = {});
 
 /// Pool slots along x, y, z for up to `wanted` slots of `slotTexels` texels each within a 3D
 /// texture of at most `maxTextureSize` texels per axis.
@@ -76,30 +98,28 @@ osg::Vec3i poolSlotsFor(std::size_t wanted, int slotTexels, int maxTextureSize);
 struct BrickStatistics
 {
     std::string volume;            ///< the Volume's name (its file)
-    int levelSampled = 0;          ///< the finest level held whole: the level the rays read
+    int levelSampled = 0;          ///< the finest level the plan holds whole: the level the rays read
     std::size_t resident = 0;      ///< bricks in the pool (all levels)
     std::size_t constant = 0;      ///< bricks of one value (no slot)
-    std::size_t missing = 0;       ///< bricks of finer levels asked for that the budget left out
+    std::size_t missing = 0;       ///< bricks of finer levels asked for that the budget or the view left out
+    std::size_t pending = 0;       ///< bricks the plan wants that are not in the pool yet (streaming)
+    std::size_t loaded = 0;        ///< bricks read so far (from memory or the file)
+    std::size_t uploaded = 0;      ///< bricks sent to the GPU so far
+    std::size_t evicted = 0;       ///< bricks dropped from the pool for others so far
     std::size_t poolBytes = 0;     ///< GPU bytes of the pool
     std::size_t budgetBytes = 0;   ///< the budget the pool was made within
+    std::size_t sourceBytes = 0;   ///< host RAM a lazy volume's source holds (0 for volumes in memory)
 };
 
-/// A volume in bricks: the pool and page table textures and what they hold.
+/// The state of a bricked volume a frame binds (BrickStreamer.h keeps it).
 struct BrickedVolume
 {
-    BrickResidency residency;
+    BrickLayout layout;
+    int firstLevel = 0;   ///< the node's level of detail
+    int levelSampled = 0; ///< the plan's finest level: rays sample here and fall back to coarser bricks
+    osg::Vec3i poolTexels;                   ///< size of the pool texture
     osg::ref_ptr<osg::Texture3D> pool;       ///< the volume's texel format (16-bit for `wide` 8-bit)
     osg::ref_ptr<osg::Texture3D> pageTable;  ///< RGBA32F, nearest, read with texelFetch
-    std::size_t poolBytes = 0;               ///< GPU bytes of the pool texture
-    std::size_t budgetBytes = 0;             ///< the budget it was made within
-    /// Its statistics, named `volume`.
-    BrickStatistics statistics(const std::string& volume) const;
 };
-
-/// Block (0, 0) of `volume` from mip level `firstLevel` down, in bricks of `brickSize` voxels,
-/// in a pool of at most `budgetBytes` and `maxTextureSize` texels per axis; `levelImages` are
-/// levels 1, 2, ... (mipLevelImages, the whole chain). `wide`: 8-bit data in 16-bit texels.
-BrickedVolume makeBrickedVolume(const Volume& volume, const std::vector<osg::ref_ptr<osg::Image>>& levelImages,
-                                int firstLevel, int brickSize, std::size_t budgetBytes, int maxTextureSize, bool wide);
 
 }  // namespace volren

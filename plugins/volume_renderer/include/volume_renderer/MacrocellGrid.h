@@ -44,8 +44,10 @@ struct GridShape
 /// voxels within its box (widened by less than one voxel per level where a size was odd).
 GridShape gridShapeFor(const osg::Vec3i& dims, int macrocellSize, int footprint, int lod);
 
-/// Texel value the GPU reads for stored voxel `i` of block (0, 0): unsigned integers / max,
+/// Texel value the GPU reads for stored voxel `i` of `data` of `type`: unsigned integers / max,
 /// signed integers / max clamped to -1 (SNORM), floats as stored.
+double texelValue(VoxelType type, const std::uint8_t* data, std::size_t i);
+/// The same for voxel `i` of block (0, 0) of `volume`.
 double texelValue(const Volume& volume, std::size_t i);
 
 /// The grid of block (0, 0) of `volume` with cells of `cellSize` voxels and `apron` voxels of

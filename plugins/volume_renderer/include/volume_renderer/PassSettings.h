@@ -14,6 +14,12 @@ struct PassSettings
     bool lighting = true;
     /// Slots forced to null for every volume (testing, cost measurements).
     std::set<std::string> forceNull;
+    /// Bricked volumes stream: frames draw the bricks already in the pool (coarser levels
+    /// meanwhile) while loader threads read the rest (volren view). Off: every frame waits for
+    /// the bricks it plans (offline renders, deterministic).
+    bool streamBricks = false;
+    /// Megabytes of bricks a streaming frame uploads at most.
+    double uploadBudgetMB = 64.0;
 
     /// Sets a pass setting by name (`lighting`, `forceNullAll`); false with `error` set when the
     /// key is not a pass setting or the value is bad.

@@ -63,6 +63,10 @@ public:
     std::size_t hiddenVolumeCount() const;
     /// What each bricked volume the last cull traversal drew holds in its pool.
     std::vector<BrickStatistics> brickStatistics() const;
+    /// Bricks the last cull traversal planned that are not in their pools yet (pass.streamBricks).
+    std::size_t pendingBricks() const;
+    /// Waits up to `seconds` for the brick loaders of the last cull traversal's volumes.
+    void waitForBricks(double seconds) const;
 
 protected:
     ~VolumeScene() override;

@@ -35,13 +35,12 @@ void registerVolumeStorageFunctions(ShaderFunctionRegistry& registry)
                   .bind =
                       [](BindContext& c) {
                           const BrickedVolume& b = *c.bricks;
-                          const BrickLayout& layout = b.residency.layout;
+                          const BrickLayout& layout = b.layout;
                           c.texture("volren_brickPool", b.pool.get());
                           c.texture("volren_pageTable", b.pageTable.get());
-                          const osg::Image& pool = *b.pool->getImage();
                           c.uniform("volren_brickSize", float(layout.brickSize));
-                          c.uniform("volren_poolSize", osg::Vec3f(float(pool.s()), float(pool.t()), float(pool.r())));
-                          c.uniform("volren_firstLevel", std::max(b.residency.firstLevel, b.residency.finestComplete));
+                          c.uniform("volren_poolSize", osg::Vec3f(float(b.poolTexels.x()), float(b.poolTexels.y()), float(b.poolTexels.z())));
+                          c.uniform("volren_firstLevel", std::max(b.firstLevel, b.levelSampled));
                           c.uniform("volren_levelCount", int(layout.levels.size()));
                           for (unsigned int i = 0; i < 16; ++i) {
                               const BrickLevel level = i < layout.levels.size() ? layout.levels[i] : BrickLevel{};

@@ -1,13 +1,20 @@
 #include <volume_renderer/PassSettings.h>
 
+#include <volume_model/ParseNumber.h>
 #include <volume_model/RenderSettings.h>
 
+#include <charconv>
+
 namespace volren {
+
 
 std::vector<std::pair<std::string, std::string>> PassSettings::keys()
 {
     return {{"lighting", "on/off: off ignores the scene's lights, so the lighting slots become null"},
-            {"forceNullAll", "comma-separated slots forced to null for every volume"}};
+            {"forceNullAll", "comma-separated slots forced to null for every volume"},
+            {"streamBricks", "on/off: bricked volumes draw what is loaded while loader threads read the rest (off: "
+                             "every frame waits for its bricks)"},
+            {"uploadBudgetMB", "megabytes of bricks a streaming frame uploads at most (> 0)"}};
 }
 
 bool PassSettings::isKey(const std::string& key)
@@ -20,6 +27,11 @@ bool PassSettings::isKey(const std::string& key)
 std::string PassSettings::get(const std::string& key) const
 {
     if (key == "lighting") return lighting ? "on" : "off";
+    if (key == "streamBricks") return streamBricks ? "on" : "off";
+    if (key == "uploadBudgetMB") {
+        char text[32];  // the shortest text that reads back as the value
+        return std::string(text, std::to_chars(text, text + sizeof(text), uploadBudgetMB).ptr);
+    }
     if (key == "forceNullAll") {
         std::string list;
         for (const auto& s : forceNull) list += (list.empty() ? "" : ",") + s;
@@ -34,6 +46,18 @@ bool PassSettings::set(const std::string& key, const std::string& value, std::st
         if (value == "on" || value == "1" || value == "true") return lighting = true, true;
         if (value == "off" || value == "0" || value == "false") return lighting = false, true;
         return error = "lighting must be on or off, got '" + value + "'", false;
+    }
+    if (key == "streamBricks") {
+        if (value == "on" || value == "1" || value == "true") return streamBricks = true, true;
+        if (value == "off" || value == "0" || value == "false") return streamBricks = false, true;
+        return error = "streamBricks must be on or off, got '" + value + "'", false;
+    }
+    if (key == "uploadBudgetMB") {
+        double v = 0.0;
+        if (!parseFiniteNumber(value, v) || !(v > 0.0) || v > 1e6)
+            return error = "uploadBudgetMB must be a number of megabytes above 0, got '" + value + "'", false;
+        uploadBudgetMB = v;
+        return true;
     }
     if (key == "forceNullAll") {
         RenderSettings probe;  // same slot list and validation as the per-node key

@@ -22,6 +22,7 @@ BindContext bindContextFor(const VolumeCandidate& candidate, osg::StateSet& stat
                        .coarseByteFiltering = candidate.coarseByteFiltering,
                        .stateSet = stateSet,
                        .textureUnits = program.textureUnits,
+                       .textureToClip = candidate.textureToClip,
                        .boxSize = node.getVolume()->worldSize()};
 }
 
@@ -95,13 +96,14 @@ bool bindProgram(BindContext& context, const ComposedProgram& program,
     if (needs(AuxData::VolumeTexture))
         context.aux[AuxData::VolumeTexture] = textures.volume(context.volume, false, cull, context.lod, wide);
     if (needs(AuxData::BrickPool)) {
-        const BrickedVolume& bricks = textures.bricked(context.volume, context.lod, context.settings.brickSize,
-                                                       volumeMemoryBudget(context.settings), largest3DTexture(), wide, cull);
+        const BrickedVolume& bricks =
+            textures.bricked(context.volume, context.lod, context.settings.brickSize, volumeMemoryBudget(context.settings),
+                             largest3DTexture(), wide, context.textureToClip, cull);
         context.bricks = &bricks;
         context.aux[AuxData::BrickPool] = bricks.pool;
-        // The budget holds the levels from finestComplete down: the volume is sampled there, at
+        // The budget holds the levels from levelSampled down: the volume is sampled there, at
         // that level's step, as if it were the node's level of detail.
-        if (const int level = bricks.residency.finestComplete; level > context.lod) {
+        if (const int level = bricks.levelSampled; level > context.lod) {
             context.sampleDistance = std::ldexp(context.sampleDistance, level - context.lod);
             context.lod = level;
         }

@@ -128,7 +128,7 @@ std::vector<VolumeCandidate> analyseScene(osg::Group& scene, unsigned int mask, 
                  << CompositionPolicy::maxLights << std::endl;
     std::vector<VolumeCandidate> out;
     for (auto& [node, matrix] : collector.volumes) {
-        VolumeCandidate c{node, matrix, offerFor(*node, matrix, collector, modelView), {}};
+        VolumeCandidate c{node, matrix, offerFor(*node, matrix, collector, modelView), {}, 0, false, {}};
         const osg::Matrixd texToScene = textureToLocal(*node->getVolume()) * matrix;
         for (int i = 0; i < 8; ++i) c.bound.expandBy(osg::Vec3d(i & 1, (i >> 1) & 1, (i >> 2) & 1) * texToScene);
         out.push_back(std::move(c));

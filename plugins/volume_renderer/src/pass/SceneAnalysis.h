@@ -1,4 +1,5 @@
 #pragma once
+#include <optional>
 // Internal to the pass: what a VolumeScene's cull traversal finds below it.
 #include <volume_renderer/CompositionPolicy.h>
 
@@ -19,6 +20,7 @@ struct VolumeCandidate
     osg::BoundingBoxd bound;   ///< its box in the VolumeScene's axes
     int lod = 0;               ///< mip level it is sampled from (levelOfDetail)
     bool coarseByteFiltering = false;  ///< the driver filters 8-bit textures to 8-bit results
+    std::optional<osg::Matrixd> textureToClip;  ///< volume texture space -> the culling camera's clip space
 };
 
 /// The volumes (with a volume, a TF and voxels), lights, clip shapes and opaque geometry below

@@ -10,6 +10,7 @@ namespace volren {
 bool exceedsTextureBudget(const VolumeNode& node, int lod, bool coarseByteFiltering)
 {
     const Volume& volume = *node.getVolume();
+    if (volume.fullResolution()) return true;  // a lazy volume's finer levels are on disk: bricks only
     const osg::Vec3i d = mipDims(volume.dims(), lod);
     const std::string& precision = node.settings.texturePrecision;
     const bool wide = voxelSize(volume.type()) == 1 && (precision == "16bit" || (precision == "auto" && coarseByteFiltering));

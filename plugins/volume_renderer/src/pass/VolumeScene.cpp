@@ -108,6 +108,7 @@ void VolumeScene::traverse(osg::NodeVisitor& nv)
         c.lod = levelOfDetail(c, *cv);
         c.coarseByteFiltering = coarseBytes;
         c.offer.exceedsTextureBudget = exceedsTextureBudget(*c.node, c.lod, coarseBytes);
+        c.textureToClip = textureToLocal(*c.node->getVolume()) * c.matrix * *cv->getModelViewMatrix() * *cv->getProjectionMatrix();
     }
     std::vector<ChosenComposition> chosen;
     std::vector<osg::BoundingBoxd> bounds;
@@ -124,6 +125,7 @@ void VolumeScene::traverse(osg::NodeVisitor& nv)
     Pass& p = *_state;
     ++p.cull;
     p.screen.beginCull(*cv, p.cull);
+    p.textures.setBrickStreaming(std::size_t(pass.uploadBudgetMB * 1048576.0), !pass.streamBricks);
     std::set<std::string> keys;
     for (const RayGroup& group : _policy.rayGroups(bounds, compositions, forcedComposition.has_value())) {
         std::vector<const VolumeNode*> nodes;
@@ -171,6 +173,18 @@ std::vector<BrickStatistics> VolumeScene::brickStatistics() const
 {
     std::lock_guard<std::mutex> lock(_mutex);
     return _state->textures.brickStatistics(_state->cull);
+}
+
+std::size_t VolumeScene::pendingBricks() const
+{
+    std::lock_guard<std::mutex> lock(_mutex);
+    return _state->textures.pendingBricks(_state->cull);
+}
+
+void VolumeScene::waitForBricks(double seconds) const
+{
+    std::lock_guard<std::mutex> lock(_mutex);
+    _state->textures.waitForBricks(_state->cull, seconds);
 }
 
 std::size_t VolumeScene::hiddenVolumeCount() const

@@ -47,10 +47,9 @@ GridShape gridShapeFor(const osg::Vec3i& dims, int macrocellSize, int footprint,
     return {int(std::max<long long>(size, macrocellSize)), int(std::ceil((footprint + 1.5) * span)) + 1};
 }
 
-double texelValue(const Volume& volume, std::size_t i)
+double texelValue(VoxelType type, const std::uint8_t* d, std::size_t i)
 {
-    const std::uint8_t* d = volume.data();
-    switch (volume.type()) {
+    switch (type) {
     case VoxelType::UInt8: return storedAt<std::uint8_t>(d, i) / 255.0;
     case VoxelType::Int8: return std::max(storedAt<std::int8_t>(d, i) / 127.0, -1.0);
     case VoxelType::UInt16: return storedAt<std::uint16_t>(d, i) / 65535.0;
@@ -58,6 +57,11 @@ double texelValue(const Volume& volume, std::size_t i)
     case VoxelType::Float32: return double(storedAt<float>(d, i));
     }
     return 0.0;
+}
+
+double texelValue(const Volume& volume, std::size_t i)
+{
+    return texelValue(volume.type(), volume.data(), i);
 }
 
 MacrocellGrid buildMacrocellGrid(const Volume& volume, int cellSize, int apron)

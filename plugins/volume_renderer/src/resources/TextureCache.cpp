@@ -4,6 +4,7 @@
 #include <volume_renderer/VolumeTextures.h>
 
 #include <algorithm>
+#include <cstring>
 
 namespace volren {
 
@@ -90,26 +91,110 @@ const std::vector<osg::ref_ptr<osg::Image>>& TextureCache::levelImages(const Vol
     return levels.images;
 }
 
-const BrickedVolume& TextureCache::bricked(const Volume& volume, int level, int brickSize, std::size_t budget, int largest,
-                                           bool wide, unsigned int cull)
+namespace {
+
+/// Where a bricked volume's voxels come from: a lazy volume's source, or the volume and its
+/// mip chain in memory (`images`: levels 1, 2, ...).
+BrickSourceLevels sourceLevels(const Volume& volume, const std::vector<osg::ref_ptr<osg::Image>>& images, int brickSize)
 {
-    Bricks& b = _bricks[{&volume, level, brickSize, budget, largest, wide}];
-    if (!b.bricks.pool || b.modified != volume.modifiedCount()) {
+    BrickSourceLevels s;
+    s.type = volume.type();
+    // The ranges leave NaN voxels out, so a brick with some would pass for constant: with
+    // non-finite voxels every brick is kept.
+    s.constantBricks = volume.nonFiniteCount() == 0;
+    const std::size_t bytes = voxelSize(volume.type());
+    if (const BrickSource* lazy = volume.fullResolution()) {
+        for (int level = 0; level < lazy->levelCount(); ++level) s.levelDims.push_back(lazy->levelDims(level));
+        s.read = [lazy](int level, const osg::Vec3i& origin, const osg::Vec3i& size, std::uint8_t* out) {
+            lazy->read(level, origin, size, out);
+        };
+        s.hostBytes = [lazy] { return lazy->residentBytes(); };
+        s.keep = lazy;
+        // The level held in memory has known ranges; the others are learnt as bricks are read.
+        s.ranges.resize(s.levelDims.size());
+        s.ranges[std::size_t(volume.fullResolutionLevel())] = buildMacrocellGrid(volume, brickSize, 1);
+        return s;
+    }
+    std::vector<const std::uint8_t*> data{volume.data()};
+    s.levelDims.push_back(volume.dims());
+    for (const osg::ref_ptr<osg::Image>& image : images) {
+        data.push_back(image->data());
+        s.levelDims.emplace_back(image->s(), image->t(), image->r());
+    }
+    for (std::size_t level = 0; level < s.levelDims.size(); ++level) {
+        if (level == 0) {
+            s.ranges.push_back(buildMacrocellGrid(volume, brickSize, 1));
+            continue;
+        }
+        osg::ref_ptr<Volume> copy = new Volume;  // a Volume view of the level for its ranges
+        const osg::Vec3i& d = s.levelDims[level];
+        copy->assign(volume.type(), d, std::vector<std::uint8_t>(data[level], data[level] + std::size_t(d.x()) * d.y() * d.z() * bytes));
+        s.ranges.push_back(buildMacrocellGrid(*copy, brickSize, 1));
+    }
+    s.read = [data, dims = s.levelDims, bytes](int level, const osg::Vec3i& origin, const osg::Vec3i& size, std::uint8_t* out) {
+        const osg::Vec3i& d = dims[std::size_t(level)];
+        for (int z = 0; z < size.z(); ++z)
+            for (int y = 0; y < size.y(); ++y)
+                std::memcpy(out + (std::size_t(z) * size.y() + y) * size.x() * bytes,
+                            data[std::size_t(level)] +
+                                ((std::size_t(origin.z() + z) * d.y() + std::size_t(origin.y() + y)) * d.x() + origin.x()) * bytes,
+                            std::size_t(size.x()) * bytes);
+    };
+    return s;
+}
+
+}  // namespace
+
+const BrickedVolume& TextureCache::bricked(const Volume& volume, int level, int brickSize, std::size_t budget, int largest,
+                                           bool wide, const std::optional<osg::Matrixd>& textureToClip, unsigned int cull)
+{
+    Bricks& b = _bricks[{&volume, brickSize, budget, largest, wide}];
+    if (!b.streamer || b.modified != volume.modifiedCount()) {
         b.volume = &volume;
-        const auto& images = levelImages(volume, mipLevelCount(volume.dims()) - 1, cull);
-        b.bricks = makeBrickedVolume(volume, images, level, brickSize, budget, largest, wide);
+        b.streamer = nullptr;  // its loaders stop before the new one reads
+        const auto& images = volume.fullResolution() ? std::vector<osg::ref_ptr<osg::Image>>{}
+                                                     : levelImages(volume, mipLevelCount(volume.dims()) - 1, cull);
+        BrickSourceLevels source = sourceLevels(volume, images, brickSize);
+        source.keep = source.keep ? source.keep : osg::ref_ptr<const osg::Referenced>(&volume);
+        b.streamer = new BrickStreamer(std::move(source), BrickBudget{.brickSize = brickSize,
+                                                                      .bytes = budget,
+                                                                      .maxTextureSize = largest,
+                                                                      .wide = wide,
+                                                                      .uploadBytesPerFrame = _uploadBytesPerFrame,
+                                                                      .complete = _completeBricks});
         b.modified = volume.modifiedCount();
     }
+    b.streamer->setStreaming(_uploadBytesPerFrame, _completeBricks);
     b.lastCull = cull;
-    return b.bricks;
+    return b.streamer->update(level, textureToClip);
+}
+
+void TextureCache::setBrickStreaming(std::size_t uploadBytesPerFrame, bool complete)
+{
+    _uploadBytesPerFrame = uploadBytesPerFrame;
+    _completeBricks = complete;
 }
 
 std::vector<BrickStatistics> TextureCache::brickStatistics(unsigned int cull) const
 {
     std::vector<BrickStatistics> out;
     for (const auto& [key, b] : _bricks)
-        if (b.lastCull == cull) out.push_back(b.bricks.statistics(b.volume->getName()));
+        if (b.lastCull == cull) out.push_back(b.streamer->statistics(b.volume->getName()));
     return out;
+}
+
+std::size_t TextureCache::pendingBricks(unsigned int cull) const
+{
+    std::size_t n = 0;
+    for (const auto& [key, b] : _bricks)
+        if (b.lastCull == cull) n += b.streamer->pending();
+    return n;
+}
+
+void TextureCache::waitForBricks(unsigned int cull, double seconds) const
+{
+    for (const auto& [key, b] : _bricks)
+        if (b.lastCull == cull) b.streamer->waitForLoads(seconds);
 }
 
 osg::Texture* TextureCache::table(const TransferFunction& transfer, bool premultiplied, unsigned int cull)
@@ -195,7 +280,10 @@ std::size_t TextureCache::bytes() const
     for (const auto& [key, r] : _ranges)
         if (r.texture) occupancy += textureBytes(*r.texture);
     std::size_t bricks = 0;
-    for (const auto& [key, b] : _bricks) bricks += b.bricks.poolBytes + textureBytes(*b.bricks.pageTable);
+    for (const auto& [key, b] : _bricks) {
+        const BrickStatistics s = b.streamer->statistics({});
+        bricks += s.poolBytes + textureBytes(*b.streamer->state().pageTable);
+    }
     return imageBytes(_volumes) + imageBytes(_tables) + occupancy + bricks;
 }
 

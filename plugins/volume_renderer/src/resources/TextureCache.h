@@ -7,10 +7,12 @@
 #include <osg/Texture3D>
 
 #include <volume_renderer/BrickPool.h>
+#include <volume_renderer/BrickStreamer.h>
 #include <volume_renderer/MacrocellGrid.h>
 
 #include <functional>
 #include <map>
+#include <optional>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -39,12 +41,20 @@ public:
                             unsigned int cull, bool& anyVisible);
     /// The value-range texture of `volume` in macrocells of `cellSize` voxels with `apron`.
     osg::Texture* ranges(const Volume& volume, int cellSize, int apron, unsigned int cull);
-    /// `volume` from mip level `level` down in bricks of `brickSize` within `budget` bytes and
-    /// textures of at most `largest` texels per axis (8-bit data in 16-bit texels when `wide`).
+    /// `volume` (a lazy volume: its full-resolution source) from mip level `level` down in bricks
+    /// of `brickSize` within `budget` bytes and textures of at most `largest` texels per axis
+    /// (8-bit data in 16-bit texels when `wide`), planned for the view `textureToClip` when given.
     const BrickedVolume& bricked(const Volume& volume, int level, int brickSize, std::size_t budget, int largest, bool wide,
-                                 unsigned int cull);
+                                 const std::optional<osg::Matrixd>& textureToClip, unsigned int cull);
+    /// How bricked volumes fill: at most `uploadBytesPerFrame` a frame (0: no limit), and whether
+    /// every frame waits for its bricks (`complete`, offline) or draws what is there (streaming).
+    void setBrickStreaming(std::size_t uploadBytesPerFrame, bool complete);
     /// Statistics of the bricked volumes used in cull `cull`.
     std::vector<BrickStatistics> brickStatistics(unsigned int cull) const;
+    /// Bricks the bricked volumes used in cull `cull` still wait for (streaming).
+    std::size_t pendingBricks(unsigned int cull) const;
+    /// Waits up to `seconds` for the loaders of the bricked volumes used in cull `cull`.
+    void waitForBricks(unsigned int cull, double seconds) const;
     /// Occupancy grids built so far (each TF or classification change builds one).
     unsigned int occupancyBuilds() const { return _occupancyBuilds; }
     /// Frees what the last few cull traversals before `cull` did not use.
@@ -97,11 +107,13 @@ private:
     struct Bricks
     {
         osg::ref_ptr<const Volume> volume;
-        BrickedVolume bricks;
+        osg::ref_ptr<BrickStreamer> streamer;
         unsigned int modified = 0;
         unsigned int lastCull = 0;
     };
-    std::map<std::tuple<const Volume*, int, int, std::size_t, int, bool>, Bricks> _bricks;
+    std::map<std::tuple<const Volume*, int, std::size_t, int, bool>, Bricks> _bricks;
+    std::size_t _uploadBytesPerFrame = 0;
+    bool _completeBricks = true;
     /// Levels 1 .. `count` of `volume`'s mip chain, made when missing or the volume changed.
     const std::vector<osg::ref_ptr<osg::Image>>& levelImages(const Volume& volume, int count, unsigned int cull);
     unsigned int _occupancyBuilds = 0;

@@ -1,0 +1,447 @@
+// A bricked volume's pool kept filled by loader threads (BrickStreamer.h).
+#include <volume_renderer/BrickStreamer.h>
+#include <volume_renderer/VolumeTextures.h>
+
+#include <osg/GLExtensions>
+#include <osg/Notify>
+#include <osg/State>
+#include <osg/Texture3D>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+
+namespace volren {
+
+/// The pool's texels in RAM (slot after slot) and which slots each GL context has yet to
+/// receive: a context made later (a second viewer) or that missed trimmed changes gets them all.
+struct BrickStreamer::Mirror
+{
+    std::mutex mutex;
+    std::vector<std::uint8_t> texels;
+    std::size_t slotBytes = 0;
+    int slotTexels = 0;
+    osg::Vec3i slots;
+    GLenum pixelType = GL_UNSIGNED_BYTE;
+    std::vector<bool> used;
+    unsigned long long sequence = 0;                        ///< changes so far
+    std::deque<std::pair<unsigned long long, int>> changes;  ///< (sequence, slot), oldest first
+    std::map<unsigned int, unsigned long long> uploaded;   ///< per context: the last change it has
+
+    void write(int slot, const std::vector<std::uint8_t>& data)
+    {
+        std::lock_guard<std::mutex> lock(mutex);
+        std::memcpy(texels.data() + std::size_t(slot) * slotBytes, data.data(), slotBytes);
+        used[std::size_t(slot)] = true;
+        changes.emplace_back(++sequence, slot);
+        if (changes.size() > 2 * used.size()) {  // a context stopped drawing: it reloads all if it comes back
+            changes.clear();
+            uploaded.clear();
+        }
+    }
+
+    void upload(osg::State& state, bool all)
+    {
+        std::lock_guard<std::mutex> lock(mutex);
+        const unsigned int context = state.getContextID();
+        auto it = uploaded.find(context);
+        all = all || it == uploaded.end() || (!changes.empty() && it->second + 1 < changes.front().first);
+        const osg::GLExtensions* gl = state.get<osg::GLExtensions>();
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+        glPixelStorei(GL_UNPACK_IMAGE_HEIGHT, 0);
+        auto send = [&](int s) {
+            const int x = s % slots.x(), y = s / slots.x() % slots.y(), z = s / (slots.x() * slots.y());
+            gl->glTexSubImage3D(GL_TEXTURE_3D, 0, x * slotTexels, y * slotTexels, z * slotTexels, slotTexels, slotTexels,
+                                slotTexels, GL_RED, pixelType, texels.data() + std::size_t(s) * slotBytes);
+        };
+        if (all) {
+            for (std::size_t s = 0; s < used.size(); ++s)
+                if (used[s]) send(int(s));
+        } else {
+            for (const auto& [seq, slot] : changes)
+                if (seq > it->second) send(slot);
+        }
+        uploaded[context] = sequence;
+        unsigned long long oldest = sequence;
+        for (const auto& [c, seq] : uploaded) oldest = std::min(oldest, seq);
+        while (!changes.empty() && changes.front().first <= oldest) changes.pop_front();
+    }
+};
+
+namespace {
+
+/// Allocates the pool's storage on a context's first use and sends it the bricks it lacks.
+class PoolUpload : public osg::Texture3D::SubloadCallback
+{
+public:
+    explicit PoolUpload(std::shared_ptr<BrickStreamer::Mirror> mirror) : _mirror(std::move(mirror)) {}
+    void load(const osg::Texture3D& texture, osg::State& state) const override
+    {
+        state.get<osg::GLExtensions>()->glTexImage3D(GL_TEXTURE_3D, 0, texture.getInternalFormat(), texture.getTextureWidth(),
+                                                     texture.getTextureHeight(), texture.getTextureDepth(), 0, GL_RED,
+                                                     _mirror->pixelType, nullptr);
+        _mirror->upload(state, true);
+    }
+    void subload(const osg::Texture3D&, osg::State& state) const override { _mirror->upload(state, false); }
+
+private:
+    std::shared_ptr<BrickStreamer::Mirror> _mirror;
+};
+
+/// Whether the box [lo, hi] (texture space) may be seen through the sides of the view of `m`
+/// (texture -> clip space). Near and far are not tested: OSG fits them after culling.
+bool mayBeSeen(const osg::Matrixd& m, const osg::Vec3d& lo, const osg::Vec3d& hi)
+{
+    int outside[4] = {0, 0, 0, 0}, behind = 0;
+    for (int c = 0; c < 8; ++c) {
+        const osg::Vec4d p = osg::Vec4d(c & 1 ? hi.x() : lo.x(), c & 2 ? hi.y() : lo.y(), c & 4 ? hi.z() : lo.z(), 1.0) * m;
+        if (p.w() <= 0.0) {
+            ++behind;
+            continue;
+        }
+        for (int a = 0; a < 2; ++a) {
+            outside[2 * a] += p[a] < -p.w();
+            outside[2 * a + 1] += p[a] > p.w();
+        }
+    }
+    if (behind == 8) return false;  // wholly behind the eye
+    if (behind > 0) return true;    // around the eye: kept
+    return std::none_of(std::begin(outside), std::end(outside), [](int n) { return n == 8; });
+}
+
+}  // namespace
+
+BrickStreamer::BrickStreamer(BrickSourceLevels source, const BrickBudget& budget)
+    : _source(std::move(source)), _budget(budget), _mirror(std::make_shared<Mirror>())
+{
+    _state.layout = brickLayout(_source.levelDims, budget.brickSize);
+    const BrickLayout& layout = _state.layout;
+    if (layout.levels.size() > 16) throw std::invalid_argument("a volume of more than 16 levels cannot be bricked");
+    _texels = budget.brickSize + 2;
+    const std::size_t voxelBytes = voxelSize(_source.type);
+    _slotBytes = std::size_t(_texels) * _texels * _texels * voxelBytes;
+    const std::size_t gpuSlotBytes = _slotBytes / voxelBytes * (budget.wide && voxelBytes == 1 ? 2 : voxelBytes);
+    // As many slots as the budget holds, no more than every level's bricks need.
+    std::size_t needed = 0;
+    for (std::size_t level = 0; level < layout.levels.size(); ++level) {
+        const MacrocellGrid* g = level < _source.ranges.size() && _source.ranges[level].size() ? &_source.ranges[level] : nullptr;
+        if (!g || !_source.constantBricks) {
+            needed += layout.brickCount(int(level));
+            continue;
+        }
+        for (std::size_t i = 0; i < g->size(); ++i) needed += !(g->lo[i] == g->hi[i] || g->lo[i] > g->hi[i]);
+    }
+    const std::size_t byBudget = budget.bytes / gpuSlotBytes;
+    osg::Vec3i slots = poolSlotsFor(std::max<std::size_t>(1, std::min(needed, byBudget)), _texels, budget.maxTextureSize);
+    _capacity = std::min({byBudget, std::size_t(slots.x()) * slots.y() * slots.z(), std::max<std::size_t>(needed, 1)});
+    planBricks(layout, _source.ranges, 0, _capacity, _source.constantBricks);  // throws when the coarsest level does not fit
+    _slots.assign(_capacity, std::nullopt);
+    _slotUsed.assign(_capacity, 0);
+
+    _mirror->slotBytes = _slotBytes;
+    _mirror->slotTexels = _texels;
+    _mirror->slots = slots;
+    _mirror->pixelType = pixelTypeFor(_source.type);
+    _mirror->texels.assign(_capacity * _slotBytes, 0);
+    _mirror->used.assign(_capacity, false);
+    _state.poolTexels = slots * _texels;
+    _state.pool = new osg::Texture3D;
+    const GLenum format = !budget.wide ? internalFormatFor(_source.type)
+                          : _source.type == VoxelType::UInt8 ? GLenum(GL_R16)
+                          : _source.type == VoxelType::Int8  ? GLenum(GL_R16_SNORM)
+                                                             : internalFormatFor(_source.type);
+    _state.pool->setTextureSize(_state.poolTexels.x(), _state.poolTexels.y(), _state.poolTexels.z());
+    _state.pool->setInternalFormat(format);
+    _state.pool->setResizeNonPowerOfTwoHint(false);
+    _state.pool->setFilter(osg::Texture::MIN_FILTER, osg::Texture::LINEAR);
+    _state.pool->setFilter(osg::Texture::MAG_FILTER, osg::Texture::LINEAR);
+    for (auto wrap : {osg::Texture::WRAP_S, osg::Texture::WRAP_T, osg::Texture::WRAP_R})
+        _state.pool->setWrap(wrap, osg::Texture::CLAMP_TO_EDGE);
+    _state.pool->setSubloadCallback(new PoolUpload(_mirror));
+
+    const osg::Vec3i& t = layout.tableSize;
+    _table.assign(std::size_t(t.x()) * t.y() * t.z() * 4, 0.0f);
+    osg::ref_ptr<osg::Image> table = new osg::Image;
+    table->setImage(t.x(), t.y(), t.z(), GL_RGBA32F_ARB, GL_RGBA, GL_FLOAT, reinterpret_cast<unsigned char*>(_table.data()),
+                    osg::Image::NO_DELETE, 1);
+    _state.pageTable = makeTexture3D(table.get(), GL_RGBA32F_ARB, osg::Texture::NEAREST);
+
+    const unsigned int threads = std::clamp(std::thread::hardware_concurrency(), 1u, 2u);
+    for (unsigned int i = 0; i < threads; ++i) _threads.emplace_back([this] { loaderLoop(); });
+}
+
+BrickStreamer::~BrickStreamer()
+{
+    {
+        std::lock_guard<std::mutex> lock(_mutex);
+        _stop = true;
+    }
+    _work.notify_all();
+    for (std::thread& t : _threads) t.join();
+}
+
+void BrickStreamer::setStreaming(std::size_t uploadBytesPerFrame, bool complete)
+{
+    _budget.uploadBytesPerFrame = uploadBytesPerFrame;
+    _budget.complete = complete;
+}
+
+BrickStreamer::Loaded BrickStreamer::load(const BrickId& id) const
+{
+    const osg::Vec3i& d = _state.layout.levels[std::size_t(id.level)].dims;
+    const osg::Vec3i origin = id.brick * _budget.brickSize - osg::Vec3i(1, 1, 1);
+    osg::Vec3i lo, hi;
+    for (int a = 0; a < 3; ++a) {
+        lo[a] = std::clamp(origin[a], 0, d[a] - 1);
+        hi[a] = std::clamp(origin[a] + _texels, lo[a] + 1, d[a]);
+    }
+    const osg::Vec3i size = hi - lo;
+    const std::size_t bytes = voxelSize(_source.type);
+    std::vector<std::uint8_t> region(std::size_t(size.x()) * size.y() * size.z() * bytes);
+    _source.read(id.level, lo, size, region.data());
+    Loaded out{id, std::vector<std::uint8_t>(_slotBytes), false, 0.0f};
+    // Voxels past the level's edges repeat the edge voxels (as clamp-to-edge would).
+    for (int z = 0; z < _texels; ++z)
+        for (int y = 0; y < _texels; ++y) {
+            const int rz = std::clamp(origin.z() + z, lo.z(), hi.z() - 1) - lo.z();
+            const int ry = std::clamp(origin.y() + y, lo.y(), hi.y() - 1) - lo.y();
+            const std::uint8_t* row = region.data() + (std::size_t(rz) * size.y() + ry) * size.x() * bytes;
+            std::uint8_t* dst = out.texels.data() + (std::size_t(z) * _texels + y) * _texels * bytes;
+            for (int x = 0; x < _texels; ++x)
+                std::memcpy(dst + std::size_t(x) * bytes,
+                            row + std::size_t(std::clamp(origin.x() + x, lo.x(), hi.x() - 1) - lo.x()) * bytes, bytes);
+        }
+    if (_source.constantBricks) {
+        const std::size_t n = out.texels.size() / bytes;
+        bool same = true;
+        for (std::size_t i = 1; i < n && same; ++i) same = std::memcmp(&out.texels[i * bytes], out.texels.data(), bytes) == 0;
+        if (same) {
+            out.constant = true;
+            out.value = float(texelValue(_source.type, out.texels.data(), 0));
+            out.texels.clear();
+        }
+    }
+    return out;
+}
+
+void BrickStreamer::loaderLoop()
+{
+    for (;;) {
+        BrickId id;
+        {
+            std::unique_lock<std::mutex> lock(_mutex);
+            _work.wait(lock, [this] { return _stop || !_queue.empty(); });
+            if (_stop) return;
+            id = _queue.front();
+            _queue.pop_front();
+            ++_busy;
+        }
+        Loaded loaded;
+        try {
+            loaded = load(id);
+        } catch (const std::exception& e) {
+            // The file failed under the reader (truncated, removed): the brick shows nothing.
+            OSG_WARN << "volren: cannot read brick " << id.brick.x() << "," << id.brick.y() << "," << id.brick.z()
+                     << " of level " << id.level << " (drawn empty): " << e.what() << std::endl;
+            loaded = Loaded{id, {}, true, std::nanf("")};
+        }
+        {
+            std::lock_guard<std::mutex> lock(_mutex);
+            _done.push_back(std::move(loaded));
+            ++_loaded;
+            --_busy;
+        }
+        _idle.notify_all();
+    }
+}
+
+void BrickStreamer::setEntry(const BrickId& id, float x, float y, float z, PageEntry kind)
+{
+    const BrickLayout& layout = _state.layout;
+    const osg::Vec3i& t = layout.tableSize;
+    float* e = &_table[((std::size_t(id.brick.z() + layout.levels[std::size_t(id.level)].tableZ) * t.y() + id.brick.y()) *
+                            t.x() + id.brick.x()) * 4];
+    e[0] = x;
+    e[1] = y;
+    e[2] = z;
+    e[3] = float(kind);
+    _tableDirty = true;
+}
+
+void BrickStreamer::replan(int firstLevel, const std::optional<osg::Matrixd>& textureToClip)
+{
+    BrickVisibility visible;
+    if (textureToClip) {
+        const BrickLayout& layout = _state.layout;
+        visible = [&layout, m = *textureToClip](int level, const osg::Vec3i& b) {
+            const BrickLevel& l = layout.levels[std::size_t(level)];
+            const int s = layout.brickSize;
+            osg::Vec3d lo, hi;
+            for (int a = 0; a < 3; ++a) {
+                lo[a] = std::max(0.0, double(b[a] * s - 1) / l.dims[a]);
+                hi[a] = std::min(1.0, double((b[a] + 1) * s + 1) / l.dims[a]);
+            }
+            return mayBeSeen(m, lo, hi);
+        };
+    }
+    _plan = planBricks(_state.layout, _source.ranges, firstLevel, _capacity, _source.constantBricks, visible);
+    _plannedLevel = firstLevel;
+    _plannedView = textureToClip;
+    ++_planCount;
+    for (const auto& [id, value] : _plan.constant) setEntry(id, value, 0.0f, 0.0f, PageEntry::Constant);
+    _wanted.clear();
+    std::vector<BrickId> toLoad;
+    for (const BrickId& id : _plan.slotted) {
+        if (_constantFound.count(id)) continue;
+        _wanted[id] = true;
+        if (auto it = _slotOf.find(id); it != _slotOf.end()) {
+            _slotUsed[std::size_t(it->second)] = _planCount;
+            continue;
+        }
+        toLoad.push_back(id);
+    }
+    {
+        std::lock_guard<std::mutex> lock(_mutex);
+        for (const BrickId& id : _queue) _requested.erase(id);
+        _queue.clear();
+        for (const BrickId& id : toLoad)
+            if (_requested.emplace(id, true).second) _queue.push_back(id);
+    }
+    _work.notify_all();
+}
+
+void BrickStreamer::take(std::vector<Loaded>& done, const std::set<BrickId>& exempt)
+{
+    std::size_t bytes = 0;
+    std::vector<int> freeSlots;
+    for (std::size_t s = _slots.size(); s-- > 0;)
+        if (!_slots[s]) freeSlots.push_back(int(s));
+    std::vector<Loaded> deferred;
+    for (Loaded& l : done) {
+        if (l.constant) {
+            _constantFound[l.id] = l.value;
+            setEntry(l.id, l.value, 0.0f, 0.0f, PageEntry::Constant);
+            _wanted.erase(l.id);
+            continue;
+        }
+        if (!_wanted.count(l.id) || _slotOf.count(l.id)) continue;  // the view moved on
+        if (_budget.uploadBytesPerFrame && bytes >= _budget.uploadBytesPerFrame && !exempt.count(l.id)) {
+            deferred.push_back(std::move(l));  // over this frame's upload budget: a later frame takes it
+            continue;
+        }
+        int slot = -1;
+        if (!freeSlots.empty()) {
+            slot = freeSlots.back();
+            freeSlots.pop_back();
+        } else {  // the least recently wanted brick the plan no longer wants
+            unsigned long long oldest = _planCount;
+            for (std::size_t s = 0; s < _slots.size(); ++s)
+                if (_slotUsed[s] < oldest) {
+                    oldest = _slotUsed[s];
+                    slot = int(s);
+                }
+            if (slot < 0) {  // every slot is wanted (the plan fits the pool, so only briefly)
+                deferred.push_back(std::move(l));
+                continue;
+            }
+            const BrickId old = *_slots[std::size_t(slot)];
+            setEntry(old, 0.0f, 0.0f, 0.0f, PageEntry::Missing);
+            _slotOf.erase(old);
+            ++_evicted;
+        }
+        _mirror->write(slot, l.texels);
+        const osg::Vec3i& n = _mirror->slots;
+        setEntry(l.id, float(slot % n.x()), float(slot / n.x() % n.y()), float(slot / (n.x() * n.y())), PageEntry::Resident);
+        _slots[std::size_t(slot)] = l.id;
+        _slotUsed[std::size_t(slot)] = _planCount;
+        _slotOf[l.id] = slot;
+        if (!exempt.count(l.id)) bytes += _slotBytes;
+        ++_uploaded;
+    }
+    done.swap(deferred);
+}
+
+const BrickedVolume& BrickStreamer::update(int firstLevel, const std::optional<osg::Matrixd>& textureToClip)
+{
+    auto sameView = [&] {
+        if (_plannedView.has_value() != textureToClip.has_value()) return false;
+        return !textureToClip || *_plannedView == *textureToClip;
+    };
+    if (_plannedLevel != firstLevel || !sameView()) replan(firstLevel, textureToClip);
+    // A frame is complete at some level: streaming or not, it waits for the coarsest levels
+    // (the first 64 bricks the plan lists, the coarsest level at least), which the upload
+    // budget does not count; offline it waits for all.
+    std::size_t mustHave = _budget.complete ? _plan.slotted.size() : std::min<std::size_t>(_plan.slotted.size(), 64);
+    while (mustHave < _plan.slotted.size() && _plan.slotted[mustHave].level == _plan.slotted.front().level) ++mustHave;
+    const std::set<BrickId> exempt(_plan.slotted.begin(), _plan.slotted.begin() + std::ptrdiff_t(mustHave));
+    auto missing = [&] {
+        for (const BrickId& id : exempt)
+            if (_wanted.count(id) && !_slotOf.count(id)) return true;
+        return false;
+    };
+    for (bool wait = missing();; wait = missing()) {
+        std::vector<Loaded> done;
+        {
+            std::unique_lock<std::mutex> lock(_mutex);
+            if (wait) _idle.wait(lock, [this] { return !_done.empty() || (_queue.empty() && _busy == 0); });
+            done.swap(_done);
+            for (const Loaded& l : done) _requested.erase(l.id);
+        }
+        take(done, exempt);
+        if (!done.empty()) {  // deferred: the next frame takes them
+            std::lock_guard<std::mutex> lock(_mutex);
+            for (const Loaded& l : done) _requested[l.id] = true;
+            _done.insert(_done.begin(), std::make_move_iterator(done.begin()), std::make_move_iterator(done.end()));
+        }
+        if (!wait) break;
+        std::lock_guard<std::mutex> lock(_mutex);
+        if (_queue.empty() && _busy == 0 && _done.empty() && missing()) break;  // nothing more will come
+    }
+    if (_tableDirty) {
+        _state.pageTable->getImage()->dirty();
+        _tableDirty = false;
+    }
+    _state.firstLevel = _plan.firstLevel;
+    _state.levelSampled = _plan.finest;
+    return _state;
+}
+
+std::size_t BrickStreamer::pending() const
+{
+    std::size_t n = 0;
+    for (const auto& [id, wanted] : _wanted) n += !_slotOf.count(id);
+    return n;
+}
+
+void BrickStreamer::waitForLoads(double seconds) const
+{
+    std::unique_lock<std::mutex> lock(_mutex);
+    _idle.wait_for(lock, std::chrono::duration<double>(seconds), [this] { return _queue.empty() && _busy == 0; });
+}
+
+BrickStatistics BrickStreamer::statistics(const std::string& volume) const
+{
+    BrickStatistics s{.volume = volume,
+                      .levelSampled = _plan.finest,
+                      .resident = _slotOf.size(),
+                      .constant = _plan.constant.size() + _constantFound.size(),
+                      .pending = pending(),
+                      .poolBytes = std::size_t(_state.poolTexels.x()) * _state.poolTexels.y() * _state.poolTexels.z() *
+                                   (_state.pool->getInternalFormat() == GL_R16 || _state.pool->getInternalFormat() == GL_R16_SNORM ? 2
+                                                                                                    : voxelSize(_source.type)),
+                      .budgetBytes = _budget.bytes,
+                      .sourceBytes = _source.hostBytes ? _source.hostBytes() : 0};
+    for (int level = _plan.firstLevel; level < _plan.finest; ++level) s.missing += _state.layout.brickCount(level);
+    {
+        std::lock_guard<std::mutex> lock(_mutex);
+        s.loaded = _loaded;
+    }
+    s.uploaded = _uploaded;
+    s.evicted = _evicted;
+    return s;
+}
+
+}  // namespace volren
