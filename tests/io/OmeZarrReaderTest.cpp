@@ -361,7 +361,10 @@ TEST(OmeZarrReader, LevelOverTheVoxelLimitSuggestsACoarserLevel)
                  {"name": "x", "type": "space"}], "datasets": [
                  {"path": "0", "coordinateTransformations": [{"type": "scale", "scale": [1, 1, 1]}]},
                  {"path": "1", "coordinateTransformations": [{"type": "scale", "scale": [2, 2, 2]}]}]}]})");
-    expectZarrError(path, path, "level 0 is 4096x4096x4096 voxels, over volren's limit of 2^34 voxels; read a coarser level with the option level=1");
+    // A RAM budget over the 64 GiB of level 0, so that it is read whole (not opened lazily).
+    osg::ref_ptr<osgDB::Options> whole = new osgDB::Options("ramBudgetMB=1000000");
+    expectZarrError(path, path, "level 0 is 4096x4096x4096 voxels, over volren's limit of 2^34 voxels; read a coarser level with the option level=1",
+                    whole.get());
 }
 
 // --- Bad input: every error names the file and the reason -----------------------------------

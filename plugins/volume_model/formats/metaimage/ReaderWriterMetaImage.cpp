@@ -15,6 +15,8 @@ public:
     {
         supportsExtension("mhd", "MetaImage header with detached data");
         supportsExtension("mha", "MetaImage with attached data");
+        supportsOption("lazy", "read: open lazily (a preview level in memory, voxels read on demand) when uncompressed, one file, one channel");
+        supportsOption("ramBudgetMB=N", "read: open lazily when the voxels are larger than N MiB (default a quarter of RAM)");
     }
 
     const char* className() const override { return "volren MetaImage reader"; }

@@ -23,6 +23,8 @@ public:
         supportsExtension("nhdr", "NRRD detached header");
         supportsOption("encoding=gzip", "write: gzip-compressed voxels (default)");
         supportsOption("encoding=raw", "write: uncompressed voxels");
+        supportsOption("lazy", "read: open lazily (a preview level in memory, voxels read on demand) when uncompressed, one file, one channel");
+        supportsOption("ramBudgetMB=N", "read: open lazily when the voxels are larger than N MiB (default a quarter of RAM)");
     }
 
     const char* className() const override { return "volren NRRD reader/writer"; }

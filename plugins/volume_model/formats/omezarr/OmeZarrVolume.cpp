@@ -1,12 +1,15 @@
 #include "OmeZarrVolume.h"
 
+#include <volume_model/LazyOpening.h>
 #include <volume_model/LoadProgress.h>
 #include <volume_model/OmeZarrImage.h>
+#include <volume_model/OmeZarrSource.h>
 
 #include <osg/Matrixd>
 #include <osg/Notify>
 
 #include <climits>
+#include <cstdint>
 #include <stdexcept>
 
 namespace volren::omezarr {
@@ -29,6 +32,19 @@ bool fits(const OmeZarrImage& image, std::size_t i, std::uint64_t blocks)
         n *= v;
     }
     return n <= Volume::maxVoxels;
+}
+
+/// The user values both readers set: placement, units, time step, level count.
+void setImageUserValues(Volume& volume, const OmeZarrImage& image, std::size_t level, const osg::Vec3d& spacing, const osg::Vec3d& origin)
+{
+    volume.setUserValue("voxelToWorld", osg::Matrixd::scale(spacing) * osg::Matrixd::translate(origin));
+    volume.setUserValue("voxelToWorldSource", std::string("ome-zarr"));
+    if (!image.spaceUnit().empty()) volume.setUserValue(spacingUnitKey, image.spaceUnit());
+    if (image.timeAxis() >= 0) {
+        volume.setUserValue(timeStepKey, image.timeStep(level));
+        if (!image.timeUnit().empty()) volume.setUserValue(timeUnitKey, image.timeUnit());
+    }
+    volume.setUserValue(levelCountKey, int(image.levelCount()));
 }
 
 }  // namespace
@@ -77,20 +93,57 @@ osg::ref_ptr<Volume> readOmeZarrVolume(const std::string& path, std::size_t leve
     volume->setSpacing(osg::Vec3d(spacing[0], spacing[1], spacing[2]));
     const OmeZarrAttributes& a = image.attributes();
     volume->setRescale(a.rescaleSlope, a.rescaleIntercept);
-    volume->setUserValue("voxelToWorld", osg::Matrixd::scale(spacing[0], spacing[1], spacing[2]) *
-                                             osg::Matrixd::translate(origin[0], origin[1], origin[2]));
-    volume->setUserValue("voxelToWorldSource", std::string("ome-zarr"));
-    if (!image.spaceUnit().empty()) volume->setUserValue(spacingUnitKey, image.spaceUnit());
-    if (image.timeAxis() >= 0) {
-        volume->setUserValue(timeStepKey, image.timeStep(level));
-        if (!image.timeUnit().empty()) volume->setUserValue(timeUnitKey, image.timeUnit());
-    }
-    volume->setUserValue(levelCountKey, int(levels));
+    setImageUserValues(*volume, image, level, osg::Vec3d(spacing[0], spacing[1], spacing[2]), osg::Vec3d(origin[0], origin[1], origin[2]));
     volume->sourceFile = path;
     volume->dirty();
     OSG_INFO << path << ": OME-Zarr " << a.version << ", level " << level << " of " << levels << ", " << sizeText(size, blocks) << " "
              << array.metadata().dtype.str() << ", spacing " << spacing[0] << " " << spacing[1] << " " << spacing[2] << " "
              << image.spaceUnit() << std::endl;
+    return volume;
+}
+
+std::uint64_t omeZarrLevelBytes(const std::string& path, std::size_t level)
+{
+    const OmeZarrImage image(path);
+    const std::array<std::uint64_t, 3> s = image.size(level);
+    std::uint64_t bytes = image.level(level).voxelBytes();
+    for (const std::uint64_t n : {s[0], s[1], s[2], image.channels(), image.frames()}) {
+        if (n != 0 && bytes > UINT64_MAX / n) return UINT64_MAX;
+        bytes *= n;
+    }
+    return bytes;
+}
+
+osg::ref_ptr<Volume> openOmeZarrVolumeLazily(const std::string& path, std::uint64_t previewBudget, const osgDB::Options* options)
+{
+    osg::ref_ptr<OmeZarrSource> source = new OmeZarrSource(path, OmeZarrSource::defaultCacheBytes, previewBudget, 0, 0, options);
+    const OmeZarrImage& image = source->image();
+    const int level = previewLevelFor(*source, previewBudget);
+    const osg::Vec3i dims = source->levelDims(level), full = source->levelDims(0);
+    osg::ref_ptr<Volume> volume = new Volume;
+    volume->allocate(source->type(), dims);
+    if (level < source->fileLevelCount())
+        image.level(std::size_t(level)).readRegion(source->box(level, {0, 0, 0}, dims), volume->data(), loadProgressOf(options));
+    else
+        source->read(level, {0, 0, 0}, dims, volume->data());
+
+    // The preview covers level 0's box exactly; its voxel centres sit inside that box.
+    const osg::Vec3d spacing0 = source->spacing();
+    const osg::Vec3d spacing(spacing0.x() * full.x() / dims.x(), spacing0.y() * full.y() / dims.y(), spacing0.z() * full.z() / dims.z());
+    const std::array<double, 3> origin0 = image.origin(0);
+    const osg::Vec3d origin = osg::Vec3d(origin0[0], origin0[1], origin0[2]) + (spacing - spacing0) * 0.5;
+    volume->setSpacing(spacing);
+    const OmeZarrAttributes& a = image.attributes();
+    volume->setRescale(a.rescaleSlope, a.rescaleIntercept);
+    setImageUserValues(*volume, image, 0, spacing, origin);
+    volume->sourceFile = path;
+    volume->setFullResolution(source.get(), level);
+    volume->dirty();
+    if (image.channels() > 1 || image.frames() > 1)
+        OSG_NOTICE << path << ": opened lazily; only channel 0, time point 0 of " << image.channels() << " channels and " << image.frames()
+                   << " time points is read" << std::endl;
+    OSG_NOTICE << path << ": opened lazily, level 0 " << full.x() << "x" << full.y() << "x" << full.z() << " read on demand; level " << level
+               << " of " << source->levelCount() << " (" << dims.x() << "x" << dims.y() << "x" << dims.z() << ") in memory" << std::endl;
     return volume;
 }
 

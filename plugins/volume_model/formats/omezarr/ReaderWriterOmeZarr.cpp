@@ -4,12 +4,15 @@
 #include "OmeZarrVolume.h"
 #include "OmeZarrWriter.h"
 
+#include <volume_model/LazyOpening.h>
 #include <volume_model/VolumeReaderWriter.h>
 
+#include <osg/Notify>
 #include <osgDB/FileNameUtils>
 #include <osgDB/FileUtils>
 #include <osgDB/Registry>
 
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -21,11 +24,11 @@ std::string withoutTrailingSlash(std::string path)
     return path;
 }
 
-/// The level=N word of `options`, 0 when there is none.
-std::size_t levelOption(const osgDB::Options* options)
+/// The level=N word of `options`, if any.
+std::optional<std::size_t> levelOption(const osgDB::Options* options)
 {
     std::istringstream words(options ? options->getOptionString() : std::string());
-    std::size_t level = 0;
+    std::optional<std::size_t> level;
     for (std::string word; words >> word;) {
         if (word.rfind("level=", 0) != 0) continue;
         const std::string value = word.substr(6);
@@ -43,6 +46,8 @@ public:
     {
         supportsExtension("zarr", "OME-Zarr 0.4 image (zarr v2 folder, x.ome.zarr), read and written");
         supportsOption("level=N", "read: resolution level N of the multiscale pyramid (0 = finest, the default)");
+        supportsOption("lazy", "read: open lazily (a preview level in memory, every level read on demand), channel 0 and time point 0 only");
+        supportsOption("ramBudgetMB=N", "read: open lazily when level 0 is larger than N MiB (default a quarter of RAM); level=N reads whole");
         supportsOption("chunk=N", "write: chunk edge along z, y, x (default 64)");
         supportsOption("compression=NAME",
                        "write: blosc-lz4 (default, byte shuffle), blosc-lz4hc, blosc-zstd, blosc-zlib, blosc-blosclz, zlib, gzip or none");
@@ -81,7 +86,13 @@ protected:
 
     ReadResult readVolume(const std::string& path, const Options* options) const override
     {
-        return ReadResult(volren::omezarr::readOmeZarrVolume(path, levelOption(options), options).get());
+        const std::optional<std::size_t> level = levelOption(options);
+        const volren::LazyOpening lazy = volren::lazyOpeningOf(options);
+        if (lazy.requested || (!level && volren::omezarr::omeZarrLevelBytes(path, 0) > lazy.ramBudget)) {
+            if (level) OSG_NOTICE << path << ": option level=" << *level << " is ignored when opening lazily" << std::endl;
+            return ReadResult(volren::omezarr::openOmeZarrVolumeLazily(path, lazy.previewBudget(), options).get());
+        }
+        return ReadResult(volren::omezarr::readOmeZarrVolume(path, level.value_or(0), options).get());
     }
 };
 

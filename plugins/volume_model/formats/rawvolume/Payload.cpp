@@ -53,8 +53,10 @@ void skipLines(std::FILE* f, std::uint64_t lines, const std::string& name, const
     }
 }
 
-void readUncompressed(std::FILE* f, std::uint64_t start, std::uint64_t fileSize, const PayloadPart& part,
-                      std::uint8_t* dst, std::uint64_t bytes, const std::string& name, Progress& progress)
+/// First byte of the voxels of an uncompressed part whose skipped lines end at `start`; checks
+/// that exactly `bytes` follow it.
+std::uint64_t uncompressedBegin(std::uint64_t start, std::uint64_t fileSize, const PayloadPart& part, std::uint64_t bytes,
+                                const std::string& name)
 {
     std::uint64_t begin = start;
     if (part.byteSkip == -1) {
@@ -72,6 +74,13 @@ void readUncompressed(std::FILE* f, std::uint64_t start, std::uint64_t fileSize,
     if (available > bytes)
         throw failure(name, "size mismatch: data file " + part.path + " holds " + std::to_string(available) +
                                 " bytes of voxel data, the header implies " + std::to_string(bytes));
+    return begin;
+}
+
+void readUncompressed(std::FILE* f, std::uint64_t start, std::uint64_t fileSize, const PayloadPart& part,
+                      std::uint8_t* dst, std::uint64_t bytes, const std::string& name, Progress& progress)
+{
+    const std::uint64_t begin = uncompressedBegin(start, fileSize, part, bytes, name);
     if (fseeko(f, off_t(begin), SEEK_SET) != 0) throw failure(name, "cannot seek in data file " + part.path);
     std::uint64_t done = 0;
     while (done < bytes) {
@@ -209,6 +218,16 @@ void readPayload(const std::vector<PayloadPart>& parts, std::uint8_t* dst, std::
     if (!reportLoadProgress(options, 0.0, double(bytes))) throw failure(name, "cancelled");
     const std::uint64_t share = bytes / parts.size();
     for (std::size_t i = 0; i < parts.size(); ++i) readPart(parts[i], dst + i * share, share, name, progress);
+}
+
+std::uint64_t uncompressedPayloadStart(const PayloadPart& part, std::uint64_t bytes, const std::string& name)
+{
+    if (part.compression != Compression::None) throw failure(name, "data file " + part.path + " is compressed");
+    std::uint64_t fileSize = 0;
+    const File f = openPart(part, name, fileSize);
+    if (fseeko(f.get(), off_t(part.offset), SEEK_SET) != 0) throw failure(name, "cannot seek in data file " + part.path);
+    skipLines(f.get(), part.lineSkip, name, part.path);
+    return uncompressedBegin(std::uint64_t(ftello(f.get())), fileSize, part, bytes, name);
 }
 
 void checkPayloadFits(const std::vector<PayloadPart>& parts, std::uint64_t bytes, const std::string& name)

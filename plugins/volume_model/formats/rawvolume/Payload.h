@@ -29,6 +29,11 @@ struct PayloadPart
 void readPayload(const std::vector<PayloadPart>& parts, std::uint8_t* dst, std::uint64_t bytes,
                  const std::string& name, const osgDB::Options* options);
 
+/// The file byte where the voxels of an uncompressed `part` start (after its offset, skipped
+/// lines and bytes), checking as readPayload does that exactly `bytes` voxel bytes follow.
+/// Throws std::runtime_error("name: reason") as readPayload does.
+std::uint64_t uncompressedPayloadStart(const PayloadPart& part, std::uint64_t bytes, const std::string& name);
+
 /// Cheap check, before the voxel buffer is allocated, that `parts` can hold `bytes` voxel
 /// bytes: each data file must exist and hold its share from its offset (a compressed one at
 /// most deflate's 1032:1 expansion of it). Throws std::runtime_error("name: truncated: ...")

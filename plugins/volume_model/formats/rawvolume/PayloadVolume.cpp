@@ -1,5 +1,8 @@
 #include "PayloadVolume.h"
 
+#include <volume_model/LazyOpening.h>
+#include <volume_model/LazyRawSource.h>
+
 #include <osg/Notify>
 
 #include <bit>
@@ -28,6 +31,61 @@ void integersToFloat(std::uint8_t* data, std::size_t count, const std::string& n
     }
 }
 
+/// Voxel bytes of the layout's payload (0 when the dims or counts are not positive or overflow).
+std::uint64_t payloadBytes(const PayloadLayout& layout)
+{
+    std::uint64_t bytes = fileVoxelSize(layout.type);
+    for (const std::int64_t n : {std::int64_t(layout.dims.x()), std::int64_t(layout.dims.y()), std::int64_t(layout.dims.z()),
+                                 std::int64_t(layout.channels), std::int64_t(layout.frames)}) {
+        if (n <= 0 || std::uint64_t(n) > (std::uint64_t(1) << 62) / bytes) return 0;
+        bytes *= std::uint64_t(n);
+    }
+    return bytes;
+}
+
+/// Why the payload cannot be opened lazily, or "" when it can.
+std::string notLazyBecause(const PayloadLayout& layout)
+{
+    if (layout.parts.size() != 1) return "its voxels are split over " + std::to_string(layout.parts.size()) + " data files";
+    if (layout.parts.front().compression != Compression::None) return "its voxels are compressed";
+    if (layout.channels != 1 || layout.frames != 1) return "it has several channels or time points";
+    if (layout.type == FileVoxelType::Int32 || layout.type == FileVoxelType::UInt32)
+        return std::string(fileVoxelTypeName(layout.type)) + " voxels are converted to float32 when read whole";
+    return {};
+}
+
+/// The payload opened lazily: a LazyRawSource over the data file, its preview level as the voxels.
+osg::ref_ptr<Volume> openPayloadLazily(const PayloadLayout& layout, std::uint64_t bytes, std::uint64_t previewBudget,
+                                       const osgDB::Options* options)
+{
+    const PayloadPart& part = layout.parts.front();
+    LazyRawSource::Layout raw;
+    raw.path = part.path;
+    raw.offset = uncompressedPayloadStart(part, bytes, layout.name);
+    raw.dims = layout.dims;
+    raw.type = volumeVoxelType(layout.type);
+    raw.bigEndian = layout.bigEndian;
+    raw.spacing = layout.spacing;
+    osg::ref_ptr<LazyRawSource> source = new LazyRawSource(raw, previewBudget, options);
+    const int level = source->previewLevel();
+    const osg::Vec3i dims = source->levelDims(level);
+    const std::uint8_t* preview = source->residentLevel(level);
+    std::vector<std::uint8_t> voxels(preview, preview + std::size_t(dims.x()) * std::size_t(dims.y()) * std::size_t(dims.z()) * voxelSize(raw.type));
+
+    osg::ref_ptr<Volume> volume = new Volume;
+    volume->assign(raw.type, dims, std::move(voxels));
+    volume->setSpacing(osg::Vec3d(layout.spacing.x() * layout.dims.x() / dims.x(), layout.spacing.y() * layout.dims.y() / dims.y(),
+                                  layout.spacing.z() * layout.dims.z() / dims.z()));
+    volume->setRescale(layout.slope, layout.intercept);
+    volume->sourceFile = layout.name;
+    volume->setName(layout.name);
+    volume->setFullResolution(source.get(), level);
+    OSG_NOTICE << layout.name << ": opened lazily, " << layout.dims.x() << "x" << layout.dims.y() << "x" << layout.dims.z() << " "
+               << voxelTypeName(raw.type) << " (" << bytes << " bytes) read on demand; level " << level << " (" << dims.x() << "x"
+               << dims.y() << "x" << dims.z() << ") and coarser in memory, " << source->residentBytes() << " bytes" << std::endl;
+    return volume;
+}
+
 }  // namespace
 
 osg::ref_ptr<Volume> readPayloadVolume(const PayloadLayout& layout, const osgDB::Options* options)
@@ -42,6 +100,20 @@ osg::ref_ptr<Volume> readPayloadVolume(const PayloadLayout& layout, const osgDB:
     if (layout.channels <= 0 || layout.frames <= 0)
         throw std::runtime_error(name + ": channel count " + std::to_string(layout.channels) + " and time point count " +
                                  std::to_string(layout.frames) + " must be positive");
+    const LazyOpening lazy = lazyOpeningOf(options);
+    // Lazily also when the volume is over what a Volume holds (the whole read would be refused).
+    const std::uint64_t payload = payloadBytes(layout), payloadVoxels = payload / fileVoxelSize(layout.type);
+    if (payload > 0 && payloadVoxels <= LazyRawSource::maxVoxels && (lazy.opensLazily(payload) || payloadVoxels > Volume::maxVoxels)) {
+        const std::string why = notLazyBecause(layout);
+        if (why.empty()) {
+            osg::ref_ptr<Volume> volume = openPayloadLazily(layout, payload, lazy.previewBudget(), options);
+            if (layout.type == FileVoxelType::Float32)
+                if (const auto bad = volume->nonFiniteCount())
+                    OSG_WARN << name << ": " << bad << " NaN/Inf voxels in the preview level; they are treated as empty" << std::endl;
+            return volume;
+        }
+        OSG_NOTICE << name << ": read whole, not lazily: " << why << std::endl;
+    }
     std::uint64_t count = 0;
     try {
         count = Volume::checkedVoxelCount(layout.dims, std::uint64_t(layout.channels) * std::uint64_t(layout.frames));

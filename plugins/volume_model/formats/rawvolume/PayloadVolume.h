@@ -26,6 +26,10 @@ struct PayloadLayout
 /// Reads the payload described by `layout` into a new Volume (straight into its buffer; one
 /// extra buffer only for interleaved channels) with native byte order. Int32/UInt32 values are
 /// kept as float32 when every value has |v| <= 2^24 (exact); otherwise the file is refused.
+/// Opens the payload lazily instead (LazyOpening.h: option `lazy`, or more voxel bytes than
+/// option ramBudgetMB=N, default a quarter of RAM) when it is uncompressed, in one data file, one
+/// channel and time point, not int32/uint32: the voxels are then the LazyRawSource's preview
+/// level (spacing scaled to the same box) and Volume::fullResolution() the source.
 /// Throws std::runtime_error("name: reason").
 osg::ref_ptr<Volume> readPayloadVolume(const PayloadLayout& layout, const osgDB::Options* options);
 

@@ -25,6 +25,8 @@ public:
         supportsOption("spacing=X,Y,Z", ".raw: voxel size (default 1,1,1)");
         supportsOption("channels=N", ".raw: interleaved values per voxel (default 1)");
         supportsOption("encoding=E", ".raw: raw (default) or gzip");
+        supportsOption("lazy", "read: open lazily (a preview level in memory, voxels read on demand) when uncompressed, one file, one channel");
+        supportsOption("ramBudgetMB=N", "read: open lazily when the voxels are larger than N MiB (default a quarter of RAM)");
     }
 
     const char* className() const override { return "volren raw/QVis volume reader"; }
