@@ -80,6 +80,7 @@ RenderOptions parseRenderOptions(const std::vector<std::string>& args, bool requ
         else if (a == "--samples") o.samples = parseInt(value(i), "--samples", 1, 64);
         else if (a == "--screenshot") o.screenshot = value(i);
         else if (a == "--stats") o.statsFile = value(i);
+        else if (a == "-O" || a == "--option") o.readerOptions += (o.readerOptions.empty() ? "" : " ") + value(i);
         else if (!a.empty() && a[0] == '-') throw UsageError("unknown option '" + a + "'");
         else if (o.input.empty()) o.input = a;
         else throw UsageError("unexpected argument '" + a + "' (input is already '" + o.input + "')");

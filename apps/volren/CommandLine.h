@@ -32,6 +32,7 @@ struct RenderOptions
     int samples = 1;                        ///< --samples N: multisampled framebuffer (MSAA)
     std::string screenshot;                 ///< view: --screenshot FILE after --frames N, then exit
     std::string statsFile;                  ///< --stats FILE.json
+    std::string readerOptions;              ///< -O OPTION (repeatable): the volume reader's options
 };
 
 /// Parses the arguments after `render`; throws UsageError naming the bad argument.

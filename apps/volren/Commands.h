@@ -19,8 +19,9 @@ int infoCommand(const std::vector<std::string>& args);
 /// writes it through osgDB by OUT's extension (NRRD, OME-Zarr, a scene), passing -O words to the
 /// writer, with a progress bar for writers that report it; returns the exit code.
 int convertCommand(const std::vector<std::string>& args);
-/// Reads a volume file, drawing a one-line progress bar on stderr once the load takes over 0.5 s.
-osg::ref_ptr<Volume> readVolumeWithProgress(const std::string& path);
+/// Reads a volume file with the reader options `readerOptions` (-O: "lazy ramBudgetMB=4096"),
+/// drawing a one-line progress bar on stderr once the load takes over 0.5 s.
+osg::ref_ptr<Volume> readVolumeWithProgress(const std::string& path, const std::string& readerOptions = {});
 /// `volren view [INPUT]`: an interactive window; returns the exit code.
 int viewCommand(const std::vector<std::string>& args);
 /// `volren shader [INPUT] [--set ...]`: prints each volume's composed ray caster and key.

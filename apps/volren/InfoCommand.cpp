@@ -12,14 +12,25 @@ namespace volren::app {
 
 int infoCommand(const std::vector<std::string>& args)
 {
-    if (args.size() != 1) throw UsageError("info takes exactly one volume file");
-    osg::ref_ptr<Volume> v = readVolumeWithProgress(args[0]);
+    std::string file, readerOptions;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        if (args[i] == "-O" || args[i] == "--option") {
+            if (i + 1 >= args.size()) throw UsageError(args[i] + " needs a value");
+            readerOptions += (readerOptions.empty() ? "" : " ") + args[++i];
+        } else if (!file.empty() || (!args[i].empty() && args[i][0] == '-')) {
+            throw UsageError("info takes one volume file and -O OPTION, got '" + args[i] + "'");
+        } else {
+            file = args[i];
+        }
+    }
+    if (file.empty()) throw UsageError("info takes exactly one volume file");
+    osg::ref_ptr<Volume> v = readVolumeWithProgress(file, readerOptions);
     const osg::Vec3i& d = v->dims();
     const osg::Vec3d& s = v->spacing();
     const auto [lo, hi] = v->valueRange();
     const Histogram h = v->histogram(256);
     std::cout << std::setprecision(6);
-    std::cout << "file:        " << args[0] << "\n"
+    std::cout << "file:        " << file << "\n"
               << "dims:        " << d.x() << " x " << d.y() << " x " << d.z() << " (" << v->voxelCount() << " voxels)\n"
               << "voxel type:  " << voxelTypeName(v->type()) << "\n"
               << "blocks:      " << v->channels() << (v->channels() == 1 ? " channel" : " channels") << " x "
@@ -32,6 +43,12 @@ int infoCommand(const std::vector<std::string>& args)
               << "non-finite:  " << v->nonFiniteCount() << " voxels\n"
               << "histogram:   p1 " << h.percentile(0.01) << ", p50 " << h.percentile(0.5) << ", p99 "
               << h.percentile(0.99) << ", Otsu threshold " << h.otsuThreshold() << "\n";
+    if (const BrickSource* lazy = v->fullResolution()) {  // the figures above are of the preview level
+        const osg::Vec3i f = lazy->levelDims(0);
+        std::cout << "opened lazily: " << f.x() << " x " << f.y() << " x " << f.z() << " voxels in the file, "
+                  << lazy->levelCount() << " levels; the figures above are of level " << v->fullResolutionLevel()
+                  << " in memory (" << lazy->residentBytes() / 1048576.0 << " MiB held)\n";
+    }
     // A 16-column sketch of the 256-bin histogram (log scale), low values on the left.
     static const char* levels = " .:-=+*#%@";
     std::vector<double> coarse(16, 0.0);

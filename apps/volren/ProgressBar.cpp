@@ -31,10 +31,11 @@ ProgressBar::~ProgressBar()
     if (_shown >= 0) std::cerr << "\r" << std::string(80, ' ') << "\r" << std::flush;
 }
 
-osg::ref_ptr<Volume> readVolumeWithProgress(const std::string& path)
+osg::ref_ptr<Volume> readVolumeWithProgress(const std::string& path, const std::string& readerOptions)
 {
     const ProgressBar bar("loading", osgDB::getSimpleFileName(path));
-    return readVolumeFile(path, withLoadProgress(nullptr, &bar.callback()).get());
+    osg::ref_ptr<osgDB::Options> options = new osgDB::Options(readerOptions);
+    return readVolumeFile(path, withLoadProgress(options.get(), &bar.callback()).get());
 }
 
 }  // namespace volren::app

@@ -15,10 +15,10 @@ namespace volren::app {
 namespace {
 
 /// A load progress bar on stderr for INPUT when it is a volume file that takes a while.
-osg::ref_ptr<osg::Node> readWithProgress(const std::string& input)
+osg::ref_ptr<osg::Node> readWithProgress(const std::string& input, const std::string& readerOptions)
 {
     if (input.empty() || !isVolumeFile(input)) return readInput(input);
-    return makeDefaultScene(readVolumeWithProgress(input).get());
+    return makeDefaultScene(readVolumeWithProgress(input, readerOptions).get());
 }
 
 /// Replaces every volume's transfer function by the one in `file`; ParaView presets are made
@@ -48,7 +48,7 @@ std::string inputName(const RenderOptions& options)
 
 osg::ref_ptr<VolumeScene> loadScene(const RenderOptions& options)
 {
-    osg::ref_ptr<VolumeScene> root = asVolumeScene(readWithProgress(options.input).get());
+    osg::ref_ptr<VolumeScene> root = asVolumeScene(readWithProgress(options.input, options.readerOptions).get());
     if (!options.tfFile.empty()) applyTransferFunction(findVolumeNodes(*root), options.tfFile, options.tfKeepRange);
     for (const auto& [key, value] : options.settings) {
         try {

@@ -372,6 +372,65 @@ TEST(VolrenCli, AVolumeOverItsMemoryBudgetIsBrickedAndStatsSayWhatThePoolHolds)
     EXPECT_GT(coveredPixels(level2), 500.0f);
 }
 
+TEST(VolrenCli, AFileOpenedLazilyRendersItsFullResolutionFromBricksReadOnDemand)
+{
+    // A 96 x 80 x 64 16-bit NRRD (raw encoding) opened lazily with a RAM budget of 0.1 MiB keeps
+    // only a coarse level in memory; its bricks of level 0 are read from the file as the frame
+    // plans them, so the image equals the bricked render of the volume read whole, waiting or
+    // streaming, and --stats counts the bricks read.
+    const std::string dir = tempDirectory();
+    const std::string file = dir + "/field.nrrd";
+    {
+        std::ofstream out(file, std::ios::binary);
+        out << "NRRD0004\ntype: uint16\ndimension: 3\nsizes: 96 80 64\nspacings: 1 1 1.5\nencoding: raw\nendian: little\n\n";
+        for (int z = 0; z < 64; ++z)
+            for (int y = 0; y < 80; ++y)
+                for (int x = 0; x < 96; ++x) {
+                    const double r = std::hypot(x - 48.0, y - 40.0, 1.5 * (z - 32.0));
+                    const auto v = std::uint16_t(r < 36.0 ? 30000.0 + 20000.0 * std::sin(0.4 * x) * std::cos(0.3 * y + 0.2 * z) : 1000.0);
+                    const unsigned char bytes[2] = {std::uint8_t(v & 0xff), std::uint8_t(v >> 8)};
+                    out.write(reinterpret_cast<const char*>(bytes), 2);
+                }
+    }
+    // One TF for all (a default TF would come from each volume's histogram: the preview's when lazy).
+    std::ofstream(dir + "/field.tf") << "0 0 0 0 0\n5000 0 0 0 0\n20000 60 120 255 20\n40000 255 200 120 60\n65535 255 255 255 120\n";
+    const std::string common = " --size 80x80 --set brickSize=16 --set volumestorage=bricked --set jitter=off --tf '" + dir + "/field.tf'";
+    ASSERT_EQ(volren("render '" + file + "' -o '" + dir + "/whole.exr'" + common).exitCode, 0);
+    const CliRun lazy = volren("render '" + file + "' -o '" + dir + "/lazy.exr'" + common + " -O ramBudgetMB=0.1 --stats '" +
+                               dir + "/stats.json'");
+    ASSERT_EQ(lazy.exitCode, 0) << lazy.output;
+    const CliRun streamed = volren("render '" + file + "' -o '" + dir + "/streamed.exr'" + common +
+                                   " -O lazy -O ramBudgetMB=0.1 --set streamBricks=on --set uploadBudgetMB=0.05 --stats '" + dir +
+                                   "/streamed.json'");
+    ASSERT_EQ(streamed.exitCode, 0) << streamed.output;
+    const nlohmann::json stats = nlohmann::json::parse(std::ifstream(dir + "/stats.json"));
+    ASSERT_EQ(stats["bricked_volumes"].size(), 1u) << stats.dump();
+    const nlohmann::json& b = stats["bricked_volumes"][0];
+    EXPECT_EQ(b["level_sampled"], 0);
+    EXPECT_GT(b["bricks_loaded"].get<std::size_t>(), 6u * 5 * 4 / 2) << "level 0 read brick by brick";
+    EXPECT_EQ(b["bricks_pending"], 0);
+    EXPECT_GT(b["source_ram_bytes"].get<std::size_t>(), 0u);
+    EXPECT_LT(b["source_ram_bytes"].get<std::size_t>(), std::size_t(96 * 80 * 64 * 2) / 8) << "a coarse level only";
+    const nlohmann::json s = nlohmann::json::parse(std::ifstream(dir + "/streamed.json"));
+    EXPECT_GT(s["streamed_frames"].get<int>(), 1) << "0.05 MiB a frame: several frames until converged";
+    const Image whole = readImage(dir + "/whole.exr"), fromFile = readImage(dir + "/lazy.exr"),
+                stream = readImage(dir + "/streamed.exr");
+    ASSERT_EQ(whole.pixels.size(), fromFile.pixels.size());
+    ASSERT_EQ(whole.pixels.size(), stream.pixels.size());
+    float worst = 0.0f, worstStream = 0.0f;
+    for (std::size_t i = 0; i < whole.pixels.size(); ++i) {
+        worst = std::max(worst, std::abs(whole.pixels[i] - fromFile.pixels[i]));
+        worstStream = std::max(worstStream, std::abs(whole.pixels[i] - stream.pixels[i]));
+    }
+    EXPECT_LE(worst, 1e-4f);
+    EXPECT_LE(worstStream, 1e-4f);
+    EXPECT_GT(coveredPixels(whole), 800.0f);
+
+    const CliRun info = volren("info '" + file + "' -O lazy -O ramBudgetMB=0.1");
+    ASSERT_EQ(info.exitCode, 0) << info.output;
+    EXPECT_NE(info.output.find("opened lazily: 96 x 80 x 64 voxels in the file"), std::string::npos) << info.output;
+}
+
 TEST(VolrenCli, InfoPrintsGeometryAndValues)
 {
     VOLREN_REQUIRE_SHARED_DATA();

@@ -24,6 +24,9 @@ struct SceneOffer
     bool opaqueGeometry = false;    ///< opaque polygons are drawn before the volumes
     /// The sampled level of the volume exceeds the node's memory budget or the largest 3D texture.
     bool exceedsTextureBudget = false;
+    /// The volume's voxels in RAM are a coarse level of a file opened lazily: their value ranges
+    /// do not bound the full resolution, so skipping is not chosen by default.
+    bool coarsePreview = false;
 };
 
 /// A volume's composition with the clip each template instance binds: per template slot, one

@@ -114,7 +114,7 @@ ChosenComposition CompositionPolicy::choose(const RenderSettings& settings, cons
             }
     // Skipping, by default wherever an implementation takes the leaps the traversal can take
     // (the user's choice is checked, not replaced).
-    if (wish.named("Acceleration").empty())
+    if (wish.named("Acceleration").empty() && !offer.coarsePreview)
         for (const std::string& name : _registry.names("Acceleration"))
             if (const ShaderFunction* f = _registry.find("Acceleration", name); f && skippingFits(out.composition, *f)) {
                 out.composition.choice["Acceleration"] = name;

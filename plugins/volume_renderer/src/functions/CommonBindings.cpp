@@ -1,5 +1,6 @@
 #include "CommonBindings.h"
 
+#include <volume_renderer/BrickPool.h>
 #include <volume_renderer/VolumeMipChain.h>
 
 #include <volume_model/TransferFunction.h>
@@ -12,7 +13,9 @@ const std::vector<UniformDecl> geometry = {{"volren_worldSize", "vec3", ""}, {"v
 
 void bindGeometry(BindContext& c)
 {
-    const osg::Vec3i d = mipDims(c.volume.dims(), c.lod);  // the voxels of the level sampled (its texture's)
+    // The voxels of the level sampled: its texture's, or for bricks that level's (a lazy
+    // volume's levels are its file's, not those of the coarse level in RAM).
+    const osg::Vec3i d = c.bricks ? c.bricks->layout.levels.at(std::size_t(c.lod)).dims : mipDims(c.volume.dims(), c.lod);
     c.uniform("volren_worldSize", osg::Vec3f(c.boxSize.length2() > 0.0 ? c.boxSize : c.volume.worldSize()));
     c.uniform("volren_dims", osg::Vec3f(float(d.x()), float(d.y()), float(d.z())));
 }

@@ -108,6 +108,7 @@ void VolumeScene::traverse(osg::NodeVisitor& nv)
         c.lod = levelOfDetail(c, *cv);
         c.coarseByteFiltering = coarseBytes;
         c.offer.exceedsTextureBudget = exceedsTextureBudget(*c.node, c.lod, coarseBytes);
+        c.offer.coarsePreview = c.node->getVolume()->fullResolution() != nullptr;
         c.textureToClip = textureToLocal(*c.node->getVolume()) * c.matrix * *cv->getModelViewMatrix() * *cv->getProjectionMatrix();
     }
     std::vector<ChosenComposition> chosen;

@@ -136,6 +136,17 @@ BrickStreamer::BrickStreamer(BrickSourceLevels source, const BrickBudget& budget
     }
     const std::size_t byBudget = budget.bytes / gpuSlotBytes;
     osg::Vec3i slots = poolSlotsFor(std::max<std::size_t>(1, std::min(needed, byBudget)), _texels, budget.maxTextureSize);
+    // Rounded up to a box of slots, the pool may pass the budget: fewer layers (or rows) then.
+    if (std::size_t(slots.x()) * slots.y() * slots.z() > byBudget && byBudget > 0) {
+        const std::size_t layer = std::size_t(slots.x()) * slots.y();
+        if (byBudget >= layer) {
+            slots.z() = int(byBudget / layer);
+        } else {
+            slots.z() = 1;
+            slots.y() = std::max(1, int(byBudget / std::size_t(slots.x())));
+            if (std::size_t(slots.x()) > byBudget) slots.x() = int(byBudget), slots.y() = 1;
+        }
+    }
     _capacity = std::min({byBudget, std::size_t(slots.x()) * slots.y() * slots.z(), std::max<std::size_t>(needed, 1)});
     planBricks(layout, _source.ranges, 0, _capacity, _source.constantBricks);  // throws when the coarsest level does not fit
     _slots.assign(_capacity, std::nullopt);
