@@ -70,6 +70,7 @@ int renderCommand(const std::vector<std::string>& args, bool defaultRun)
                               {"level_sampled", b.levelSampled},
                               {"bricks_resident", b.resident},
                               {"bricks_constant", b.constant},
+                              {"bricks_hidden", b.hidden},
                               {"bricks_missing", b.missing},
                               {"bricks_pending", b.pending},
                               {"bricks_loaded", b.loaded},

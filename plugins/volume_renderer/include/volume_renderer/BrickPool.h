@@ -11,6 +11,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -79,16 +80,21 @@ struct BrickPlan
 
 /// Whether a brick of a level may be seen (the view's frustum); every brick when empty.
 using BrickVisibility = std::function<bool(int level, const osg::Vec3i& brick)>;
+/// For a brick whose every sample the transfer function hides, the texel value its page entry
+/// holds instead (a value the TF hides); nothing for a brick that may show or is not known.
+using BrickHiding = std::function<std::optional<float>(int level, const osg::Vec3i& brick)>;
 
 /// Plans a pool of `capacity` slots from the coarsest level to `firstLevel`, a level at a time
 /// while all of its visible bricks that need a slot fit (the coarsest level is wanted whole, so a
 /// sample anywhere finds a value). `ranges[level]` holds each brick's texel range with its border
 /// (a MacrocellGrid with cells of brickSize and an apron of 1), or is empty where unknown (a lazy
 /// source's level not in memory: every brick needs a slot until loaded). With `constantBricks`,
-/// a brick of one value takes no slot. Deterministic. Throws std::invalid_argument when not even
-/// the coarsest level fits.
+/// a brick of one value takes no slot, and so does a brick `hidden` gives a value for (listed
+/// with the constant ones). Deterministic. Throws std::invalid_argument when not even the
+/// coarsest level fits.
 BrickPlan planBricks(const BrickLayout& layout, const std::vector<MacrocellGrid>& ranges, int firstLevel,
-                     std::size_t capacity, bool constantBricks, const BrickVisibility& visible = {});
+                     std::size_t capacity, bool constantBricks, const BrickVisibility& visible = {},
+                     const BrickHiding& hidden = {});
 
 /// Pool slots along x, y, z for up to `wanted` slots of `slotTexels` texels each within a 3D
 /// texture of at most `maxTextureSize` texels per axis.
@@ -101,6 +107,7 @@ struct BrickStatistics
     int levelSampled = 0;          ///< the finest level the plan holds whole: the level the rays read
     std::size_t resident = 0;      ///< bricks in the pool (all levels)
     std::size_t constant = 0;      ///< bricks of one value (no slot)
+    std::size_t hidden = 0;        ///< bricks the transfer function hides (no slot; of `constant`)
     std::size_t missing = 0;       ///< bricks of finer levels asked for that the budget or the view left out
     std::size_t pending = 0;       ///< bricks the plan wants that are not in the pool yet (streaming)
     std::size_t loaded = 0;        ///< bricks read so far (from memory or the file)

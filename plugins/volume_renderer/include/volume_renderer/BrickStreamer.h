@@ -16,6 +16,7 @@
 #include <mutex>
 #include <optional>
 #include <set>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -30,6 +31,9 @@ struct BrickSourceLevels
     std::function<void(int level, const osg::Vec3i& origin, const osg::Vec3i& size, std::uint8_t* out)> read;
     /// Texel ranges of each level's bricks with their border (empty where unknown until read).
     std::vector<MacrocellGrid> ranges;
+    /// Texel ranges of a level's bricks with `apron` voxels around them (an empty grid where
+    /// unknown), for the bricks a transfer function hides.
+    std::function<MacrocellGrid(int level, int apron)> rangesWithApron;
     bool constantBricks = true;              ///< bricks of one value take no slot (false with NaN voxels)
     std::function<std::size_t()> hostBytes;  ///< RAM the source holds (a lazy file's levels), or empty
     osg::ref_ptr<const osg::Referenced> keep;  ///< what `read` reads from, kept alive
@@ -46,6 +50,16 @@ struct BrickBudget
     bool complete = true;             ///< every frame waits until its plan is resident (offline, deterministic)
 };
 
+/// Which bricks a frame's transfer function hides: those whose values, with `apron` voxels around
+/// them (the Reconstruction's footprint and the gradient's one voxel), `mayShow` rejects. Such a
+/// brick takes no slot; its page entry holds its lowest value, which the TF hides too.
+struct BrickHidingRule
+{
+    int apron = 1;
+    std::string key;  ///< what mayShow depends on (classification, TF and its modified count)
+    std::function<bool(double lo, double hi)> mayShow;
+};
+
 /// One bricked volume's pool, page table and loader threads.
 class BrickStreamer : public osg::Referenced
 {
@@ -57,7 +71,9 @@ public:
     /// `textureToClip` (volume texture space -> clip space) left out when given; queues loads,
     /// takes finished ones into the pool (evicting bricks the plan no longer wants) and returns
     /// what the frame binds. With budget.complete it first waits for every planned brick.
-    const BrickedVolume& update(int firstLevel, const std::optional<osg::Matrixd>& textureToClip);
+    /// With `hiding`, bricks its transfer function hides are not loaded.
+    const BrickedVolume& update(int firstLevel, const std::optional<osg::Matrixd>& textureToClip,
+                                const BrickHidingRule* hiding = nullptr);
     /// What the last update() returned.
     const BrickedVolume& state() const { return _state; }
     /// Planned bricks not in the pool yet.
@@ -85,7 +101,8 @@ private:
     void loaderLoop();
     Loaded load(const BrickId& id) const;
     void setEntry(const BrickId& id, float x, float y, float z, PageEntry kind);
-    void replan(int firstLevel, const std::optional<osg::Matrixd>& textureToClip);
+    void setSlotEntry(const BrickId& id, int slot);  ///< the entry of a brick resident at `slot`
+    void replan(int firstLevel, const std::optional<osg::Matrixd>& textureToClip, const BrickHidingRule* hiding);
     /// Puts loaded bricks into the pool, at most the upload budget of them besides `exempt`;
     /// leaves in `done` what waits for a later frame.
     void take(std::vector<Loaded>& done, const std::set<BrickId>& exempt);
@@ -103,6 +120,9 @@ private:
     // The plan and where each brick stands.
     int _plannedLevel = -1;
     std::optional<osg::Matrixd> _plannedView;
+    std::string _plannedHiding;                       ///< the hiding rule's key ("" without one)
+    std::map<int, std::vector<MacrocellGrid>> _apronRanges;  ///< per apron, per level (built on first use)
+    std::set<BrickId> _hidden;                        ///< bricks the plan's TF hides
     BrickPlan _plan;
     std::map<BrickId, int> _slotOf;            ///< resident bricks
     std::map<BrickId, float> _constantFound;   ///< bricks found constant when read

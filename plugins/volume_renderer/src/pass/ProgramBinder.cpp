@@ -75,6 +75,29 @@ osg::Texture* occupancyFor(const BindContext& context, const std::vector<const B
         cull, anyVisible);
 }
 
+/// Which bricks the bound transfer function hides, where the traversal leaps over transparent
+/// space (as empty-space skipping by default): the Classification's opacity mirror over each
+/// brick's values with the Reconstruction's footprint and the gradient's one voxel around it.
+/// Null for MIP, isosurfaces, classifications without a mirror and coarse previews.
+std::optional<BrickHidingRule> hidingFor(const BindContext& context, const std::vector<const Binding*>& bindings)
+{
+    const ShaderFunction *traversal = nullptr, *classification = nullptr, *reconstruction = nullptr;
+    for (const Binding* b : bindings) {
+        if (b->function->slot == "RayTraversal") traversal = b->function;
+        if (b->function->slot == "Classification") classification = b->function;
+        if (b->function->slot == "Reconstruction") reconstruction = b->function;
+    }
+    if (!traversal || !classification || !reconstruction || !classification->mayShow || reconstruction->traits.footprint < 0 ||
+        traversal->traits.skips != "opacity" || !traversal->traits.skipsByDefault)
+        return std::nullopt;
+    char key[160];
+    std::snprintf(key, sizeof(key), " %a %p %u", context.settings.threshold, static_cast<const void*>(&context.transfer),
+                  context.transfer.modifiedCount());
+    return BrickHidingRule{.apron = reconstruction->traits.footprint + 1,
+                           .key = classification->name + key,
+                           .mayShow = classification->mayShow(context)};
+}
+
 }  // namespace
 
 bool bindProgram(BindContext& context, const ComposedProgram& program,
@@ -89,6 +112,8 @@ bool bindProgram(BindContext& context, const ComposedProgram& program,
             if (b->function->needsAux(aux)) return true;
         return false;
     };
+    for (const Binding* b : mine)
+        if (b->instance < 0) context.chosen[b->function->slot] = b->function->name;
     context.volumeTexture = [&textures, cull](const Volume& v, bool nearest) { return textures.volume(v, nearest, cull); };
     // The texture of the mip level sampled (level of detail), 16-bit where texturePrecision says.
     const std::string& precision = context.settings.texturePrecision;
@@ -96,9 +121,10 @@ bool bindProgram(BindContext& context, const ComposedProgram& program,
     if (needs(AuxData::VolumeTexture))
         context.aux[AuxData::VolumeTexture] = textures.volume(context.volume, false, cull, context.lod, wide);
     if (needs(AuxData::BrickPool)) {
+        const std::optional<BrickHidingRule> hiding = hidingFor(context, mine);
         const BrickedVolume& bricks =
             textures.bricked(context.volume, context.lod, context.settings.brickSize, volumeMemoryBudget(context.settings),
-                             largest3DTexture(), wide, context.textureToClip, cull);
+                             largest3DTexture(), wide, context.textureToClip, hiding ? &*hiding : nullptr, cull);
         context.bricks = &bricks;
         context.aux[AuxData::BrickPool] = bricks.pool;
         // The budget holds the levels from levelSampled down: the volume is sampled there, at
@@ -112,8 +138,6 @@ bool bindProgram(BindContext& context, const ComposedProgram& program,
         context.aux[AuxData::TransferFunctionTable] = textures.table(context.transfer, false, cull);
     if (needs(AuxData::PremultipliedTable))
         context.aux[AuxData::PremultipliedTable] = textures.table(context.transfer, true, cull);
-    for (const Binding* b : mine)
-        if (b->instance < 0) context.chosen[b->function->slot] = b->function->name;
     bool anyVisible = true;
     if (needs(AuxData::OccupancyGrid))
         context.aux[AuxData::OccupancyGrid] = occupancyFor(context, mine, textures, cull, false, anyVisible);

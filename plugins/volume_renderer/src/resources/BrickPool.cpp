@@ -68,7 +68,7 @@ bool isConstant(const MacrocellGrid& g, std::size_t i)
 }  // namespace
 
 BrickPlan planBricks(const BrickLayout& layout, const std::vector<MacrocellGrid>& ranges, int firstLevel,
-                     std::size_t capacity, bool constantBricks, const BrickVisibility& visible)
+                     std::size_t capacity, bool constantBricks, const BrickVisibility& visible, const BrickHiding& hidden)
 {
     BrickPlan plan;
     const int levels = int(layout.levels.size());
@@ -84,6 +84,11 @@ BrickPlan planBricks(const BrickLayout& layout, const std::vector<MacrocellGrid>
                 for (int x = 0; x < l.bricks.x(); ++x) {
                     const osg::Vec3i b(x, y, z);
                     if (level != levels - 1 && visible && !visible(level, b)) continue;
+                    if (hidden)
+                        if (const std::optional<float> value = hidden(level, b)) {
+                            constant.emplace_back(BrickId{level, b}, *value);
+                            continue;
+                        }
                     if (g && constantBricks && isConstant(*g, g->index(x, y, z))) {
                         const std::size_t i = g->index(x, y, z);
                         constant.emplace_back(BrickId{level, b}, g->lo[i] > g->hi[i] ? std::nanf("") : g->lo[i]);

@@ -282,8 +282,38 @@ void BrickStreamer::setEntry(const BrickId& id, float x, float y, float z, PageE
     _tableDirty = true;
 }
 
-void BrickStreamer::replan(int firstLevel, const std::optional<osg::Matrixd>& textureToClip)
+void BrickStreamer::setSlotEntry(const BrickId& id, int slot)
 {
+    const osg::Vec3i& n = _mirror->slots;
+    setEntry(id, float(slot % n.x()), float(slot / n.x() % n.y()), float(slot / (n.x() * n.y())), PageEntry::Resident);
+}
+
+void BrickStreamer::replan(int firstLevel, const std::optional<osg::Matrixd>& textureToClip, const BrickHidingRule* hiding)
+{
+    // Bricks the last TF hid read from their level again until the new plan says otherwise.
+    for (const BrickId& id : _hidden) {
+        if (auto it = _slotOf.find(id); it != _slotOf.end())
+            setSlotEntry(id, it->second);  // still in its slot from before the TF hid it
+        else
+            setEntry(id, 0.0f, 0.0f, 0.0f, PageEntry::Missing);
+    }
+    _hidden.clear();
+    BrickHiding hidden;
+    if (hiding && _source.rangesWithApron) {
+        std::vector<MacrocellGrid>& grids = _apronRanges[hiding->apron];
+        if (grids.empty())
+            for (int level = 0; level < int(_state.layout.levels.size()); ++level)
+                grids.push_back(_source.rangesWithApron(level, hiding->apron));
+        hidden = [this, &grids, hiding](int level, const osg::Vec3i& b) -> std::optional<float> {
+            const MacrocellGrid& g = grids[std::size_t(level)];
+            if (!g.size() || g.cells != _state.layout.levels[std::size_t(level)].bricks) return std::nullopt;
+            const std::size_t i = g.index(b.x(), b.y(), b.z());
+            if (g.lo[i] > g.hi[i]) return std::nullopt;  // NaN only: left to the constant test
+            if (hiding->mayShow(g.lo[i], g.hi[i])) return std::nullopt;
+            _hidden.insert(BrickId{level, b});
+            return g.lo[i];
+        };
+    }
     BrickVisibility visible;
     if (textureToClip) {
         const BrickLayout& layout = _state.layout;
@@ -298,9 +328,10 @@ void BrickStreamer::replan(int firstLevel, const std::optional<osg::Matrixd>& te
             return mayBeSeen(m, lo, hi);
         };
     }
-    _plan = planBricks(_state.layout, _source.ranges, firstLevel, _capacity, _source.constantBricks, visible);
+    _plan = planBricks(_state.layout, _source.ranges, firstLevel, _capacity, _source.constantBricks, visible, hidden);
     _plannedLevel = firstLevel;
     _plannedView = textureToClip;
+    _plannedHiding = hiding ? hiding->key : std::string();
     ++_planCount;
     for (const auto& [id, value] : _plan.constant) setEntry(id, value, 0.0f, 0.0f, PageEntry::Constant);
     _wanted.clear();
@@ -359,13 +390,12 @@ void BrickStreamer::take(std::vector<Loaded>& done, const std::set<BrickId>& exe
                 continue;
             }
             const BrickId old = *_slots[std::size_t(slot)];
-            setEntry(old, 0.0f, 0.0f, 0.0f, PageEntry::Missing);
+            if (!_hidden.count(old) && !_constantFound.count(old)) setEntry(old, 0.0f, 0.0f, 0.0f, PageEntry::Missing);
             _slotOf.erase(old);
             ++_evicted;
         }
         _mirror->write(slot, l.texels);
-        const osg::Vec3i& n = _mirror->slots;
-        setEntry(l.id, float(slot % n.x()), float(slot / n.x() % n.y()), float(slot / (n.x() * n.y())), PageEntry::Resident);
+        setSlotEntry(l.id, slot);
         _slots[std::size_t(slot)] = l.id;
         _slotUsed[std::size_t(slot)] = _planCount;
         _slotOf[l.id] = slot;
@@ -375,13 +405,15 @@ void BrickStreamer::take(std::vector<Loaded>& done, const std::set<BrickId>& exe
     done.swap(deferred);
 }
 
-const BrickedVolume& BrickStreamer::update(int firstLevel, const std::optional<osg::Matrixd>& textureToClip)
+const BrickedVolume& BrickStreamer::update(int firstLevel, const std::optional<osg::Matrixd>& textureToClip,
+                                           const BrickHidingRule* hiding)
 {
     auto sameView = [&] {
         if (_plannedView.has_value() != textureToClip.has_value()) return false;
         return !textureToClip || *_plannedView == *textureToClip;
     };
-    if (_plannedLevel != firstLevel || !sameView()) replan(firstLevel, textureToClip);
+    if (_plannedLevel != firstLevel || !sameView() || _plannedHiding != (hiding ? hiding->key : std::string()))
+        replan(firstLevel, textureToClip, hiding);
     // A frame is complete at some level: streaming or not, it waits for the coarsest levels
     // (the first 64 bricks the plan lists, the coarsest level at least), which the upload
     // budget does not count; offline it waits for all.
@@ -439,6 +471,7 @@ BrickStatistics BrickStreamer::statistics(const std::string& volume) const
                       .levelSampled = _plan.finest,
                       .resident = _slotOf.size(),
                       .constant = _plan.constant.size() + _constantFound.size(),
+                      .hidden = _hidden.size(),
                       .pending = pending(),
                       .poolBytes = std::size_t(_state.poolTexels.x()) * _state.poolTexels.y() * _state.poolTexels.z() *
                                    (_state.pool->getInternalFormat() == GL_R16 || _state.pool->getInternalFormat() == GL_R16_SNORM ? 2

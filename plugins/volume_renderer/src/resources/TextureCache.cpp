@@ -112,7 +112,11 @@ BrickSourceLevels sourceLevels(const Volume& volume, const std::vector<osg::ref_
         s.keep = lazy;
         // The level held in memory has known ranges; the others are learnt as bricks are read.
         s.ranges.resize(s.levelDims.size());
-        s.ranges[std::size_t(volume.fullResolutionLevel())] = buildMacrocellGrid(volume, brickSize, 1);
+        const int preview = volume.fullResolutionLevel();
+        s.ranges[std::size_t(preview)] = buildMacrocellGrid(volume, brickSize, 1);
+        s.rangesWithApron = [v = osg::ref_ptr<const Volume>(&volume), preview, brickSize](int level, int apron) {
+            return level == preview ? buildMacrocellGrid(*v, brickSize, apron) : MacrocellGrid{};
+        };
         return s;
     }
     std::vector<const std::uint8_t*> data{volume.data()};
@@ -121,16 +125,19 @@ BrickSourceLevels sourceLevels(const Volume& volume, const std::vector<osg::ref_
         data.push_back(image->data());
         s.levelDims.emplace_back(image->s(), image->t(), image->r());
     }
-    for (std::size_t level = 0; level < s.levelDims.size(); ++level) {
-        if (level == 0) {
-            s.ranges.push_back(buildMacrocellGrid(volume, brickSize, 1));
-            continue;
-        }
-        osg::ref_ptr<Volume> copy = new Volume;  // a Volume view of the level for its ranges
-        const osg::Vec3i& d = s.levelDims[level];
-        copy->assign(volume.type(), d, std::vector<std::uint8_t>(data[level], data[level] + std::size_t(d.x()) * d.y() * d.z() * bytes));
-        s.ranges.push_back(buildMacrocellGrid(*copy, brickSize, 1));
-    }
+    // A level as a Volume of its own, for its ranges (level 0: the volume itself).
+    auto levelVolume = [v = osg::ref_ptr<const Volume>(&volume), images, data, dims = s.levelDims, bytes](int level) {
+        if (level == 0) return v;
+        osg::ref_ptr<Volume> copy = new Volume;
+        const osg::Vec3i& d = dims[std::size_t(level)];
+        const std::uint8_t* begin = data[std::size_t(level)];
+        copy->assign(v->type(), d, std::vector<std::uint8_t>(begin, begin + std::size_t(d.x()) * d.y() * d.z() * bytes));
+        return osg::ref_ptr<const Volume>(copy);
+    };
+    for (int level = 0; level < int(s.levelDims.size()); ++level) s.ranges.push_back(buildMacrocellGrid(*levelVolume(level), brickSize, 1));
+    s.rangesWithApron = [levelVolume, brickSize](int level, int apron) {
+        return buildMacrocellGrid(*levelVolume(level), brickSize, apron);
+    };
     s.read = [data, dims = s.levelDims, bytes](int level, const osg::Vec3i& origin, const osg::Vec3i& size, std::uint8_t* out) {
         const osg::Vec3i& d = dims[std::size_t(level)];
         for (int z = 0; z < size.z(); ++z)
@@ -146,7 +153,8 @@ BrickSourceLevels sourceLevels(const Volume& volume, const std::vector<osg::ref_
 }  // namespace
 
 const BrickedVolume& TextureCache::bricked(const Volume& volume, int level, int brickSize, std::size_t budget, int largest,
-                                           bool wide, const std::optional<osg::Matrixd>& textureToClip, unsigned int cull)
+                                           bool wide, const std::optional<osg::Matrixd>& textureToClip,
+                                           const BrickHidingRule* hiding, unsigned int cull)
 {
     Bricks& b = _bricks[{&volume, brickSize, budget, largest, wide}];
     if (!b.streamer || b.modified != volume.modifiedCount()) {
@@ -166,7 +174,7 @@ const BrickedVolume& TextureCache::bricked(const Volume& volume, int level, int 
     }
     b.streamer->setStreaming(_uploadBytesPerFrame, _completeBricks);
     b.lastCull = cull;
-    return b.streamer->update(level, textureToClip);
+    return b.streamer->update(level, textureToClip, hiding);
 }
 
 void TextureCache::setBrickStreaming(std::size_t uploadBytesPerFrame, bool complete)

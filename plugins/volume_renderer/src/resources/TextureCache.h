@@ -43,9 +43,11 @@ public:
     osg::Texture* ranges(const Volume& volume, int cellSize, int apron, unsigned int cull);
     /// `volume` (a lazy volume: its full-resolution source) from mip level `level` down in bricks
     /// of `brickSize` within `budget` bytes and textures of at most `largest` texels per axis
-    /// (8-bit data in 16-bit texels when `wide`), planned for the view `textureToClip` when given.
+    /// (8-bit data in 16-bit texels when `wide`), planned for the view `textureToClip` when given,
+    /// leaving out the bricks `hiding` says the transfer function hides.
     const BrickedVolume& bricked(const Volume& volume, int level, int brickSize, std::size_t budget, int largest, bool wide,
-                                 const std::optional<osg::Matrixd>& textureToClip, unsigned int cull);
+                                 const std::optional<osg::Matrixd>& textureToClip, const BrickHidingRule* hiding,
+                                 unsigned int cull);
     /// How bricked volumes fill: at most `uploadBytesPerFrame` a frame (0: no limit), and whether
     /// every frame waits for its bricks (`complete`, offline) or draws what is there (streaming).
     void setBrickStreaming(std::size_t uploadBytesPerFrame, bool complete);
