@@ -102,6 +102,12 @@ private:
     Loaded load(const BrickId& id) const;
     void setEntry(const BrickId& id, float x, float y, float z, PageEntry kind);
     void setSlotEntry(const BrickId& id, int slot);  ///< the entry of a brick resident at `slot`
+    /// A box of at least `wanted` slots (fewer where the budget ends) within the largest texture.
+    osg::Vec3i poolBoxFor(std::size_t wanted) const;
+    std::size_t slotsWithin(std::size_t wanted) const;  ///< slots of poolBoxFor(wanted)
+    /// A new pool texture of about `wanted` slots (at most _maxCapacity), keeping every slot's
+    /// bricks (the mirror holds them) and moving their page entries to the new box.
+    void resizePool(std::size_t wanted);
     void replan(int firstLevel, const std::optional<osg::Matrixd>& textureToClip, const BrickHidingRule* hiding);
     /// Puts loaded bricks into the pool, at most the upload budget of them besides `exempt`;
     /// leaves in `done` what waits for a later frame.
@@ -111,7 +117,10 @@ private:
     BrickBudget _budget;
     int _texels = 0;             ///< slot edge: brickSize + 2
     std::size_t _slotBytes = 0;  ///< bytes of one slot's stored voxels
-    std::size_t _capacity = 0;   ///< slots
+    std::size_t _capacity = 0;     ///< slots of the pool now
+    std::size_t _maxCapacity = 0;  ///< slots the budget (and the bricks there are) allow
+    std::size_t _byBudget = 0;     ///< slots the budget holds
+    GLenum _format = 0;            ///< the pool's internal format
     BrickedVolume _state;
     std::vector<float> _table;   ///< page table texels (RGBA), mirrored in _state.pageTable's image
     bool _tableDirty = false;

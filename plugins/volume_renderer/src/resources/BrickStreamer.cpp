@@ -20,7 +20,9 @@ namespace volren {
 struct BrickStreamer::Mirror
 {
     std::mutex mutex;
-    std::vector<std::uint8_t> texels;
+    /// Uninitialised, so RAM is taken only by the slots written (the pool is sized for the
+    /// budget, the plan may use a fraction of it).
+    std::unique_ptr<std::uint8_t[]> texels;
     std::size_t slotBytes = 0;
     int slotTexels = 0;
     osg::Vec3i slots;
@@ -33,7 +35,7 @@ struct BrickStreamer::Mirror
     void write(int slot, const std::vector<std::uint8_t>& data)
     {
         std::lock_guard<std::mutex> lock(mutex);
-        std::memcpy(texels.data() + std::size_t(slot) * slotBytes, data.data(), slotBytes);
+        std::memcpy(texels.get() + std::size_t(slot) * slotBytes, data.data(), slotBytes);
         used[std::size_t(slot)] = true;
         changes.emplace_back(++sequence, slot);
         if (changes.size() > 2 * used.size()) {  // a context stopped drawing: it reloads all if it comes back
@@ -55,7 +57,7 @@ struct BrickStreamer::Mirror
         auto send = [&](int s) {
             const int x = s % slots.x(), y = s / slots.x() % slots.y(), z = s / (slots.x() * slots.y());
             gl->glTexSubImage3D(GL_TEXTURE_3D, 0, x * slotTexels, y * slotTexels, z * slotTexels, slotTexels, slotTexels,
-                                slotTexels, GL_RED, pixelType, texels.data() + std::size_t(s) * slotBytes);
+                                slotTexels, GL_RED, pixelType, texels.get() + std::size_t(s) * slotBytes);
         };
         if (all) {
             for (std::size_t s = 0; s < used.size(); ++s)
@@ -134,44 +136,18 @@ BrickStreamer::BrickStreamer(BrickSourceLevels source, const BrickBudget& budget
         }
         for (std::size_t i = 0; i < g->size(); ++i) needed += !(g->lo[i] == g->hi[i] || g->lo[i] > g->hi[i]);
     }
-    const std::size_t byBudget = budget.bytes / gpuSlotBytes;
-    osg::Vec3i slots = poolSlotsFor(std::max<std::size_t>(1, std::min(needed, byBudget)), _texels, budget.maxTextureSize);
-    // Rounded up to a box of slots, the pool may pass the budget: fewer layers (or rows) then.
-    if (std::size_t(slots.x()) * slots.y() * slots.z() > byBudget && byBudget > 0) {
-        const std::size_t layer = std::size_t(slots.x()) * slots.y();
-        if (byBudget >= layer) {
-            slots.z() = int(byBudget / layer);
-        } else {
-            slots.z() = 1;
-            slots.y() = std::max(1, int(byBudget / std::size_t(slots.x())));
-            if (std::size_t(slots.x()) > byBudget) slots.x() = int(byBudget), slots.y() = 1;
-        }
-    }
-    _capacity = std::min({byBudget, std::size_t(slots.x()) * slots.y() * slots.z(), std::max<std::size_t>(needed, 1)});
-    planBricks(layout, _source.ranges, 0, _capacity, _source.constantBricks);  // throws when the coarsest level does not fit
-    _slots.assign(_capacity, std::nullopt);
-    _slotUsed.assign(_capacity, 0);
-
+    _byBudget = budget.bytes / gpuSlotBytes;
+    _maxCapacity = std::min(_byBudget, std::max<std::size_t>(needed, 1));
+    _maxCapacity = std::min(_maxCapacity, slotsWithin(_maxCapacity));
+    planBricks(layout, _source.ranges, 0, _maxCapacity, _source.constantBricks);  // throws when the coarsest level does not fit
     _mirror->slotBytes = _slotBytes;
     _mirror->slotTexels = _texels;
-    _mirror->slots = slots;
     _mirror->pixelType = pixelTypeFor(_source.type);
-    _mirror->texels.assign(_capacity * _slotBytes, 0);
-    _mirror->used.assign(_capacity, false);
-    _state.poolTexels = slots * _texels;
-    _state.pool = new osg::Texture3D;
-    const GLenum format = !budget.wide ? internalFormatFor(_source.type)
-                          : _source.type == VoxelType::UInt8 ? GLenum(GL_R16)
-                          : _source.type == VoxelType::Int8  ? GLenum(GL_R16_SNORM)
-                                                             : internalFormatFor(_source.type);
-    _state.pool->setTextureSize(_state.poolTexels.x(), _state.poolTexels.y(), _state.poolTexels.z());
-    _state.pool->setInternalFormat(format);
-    _state.pool->setResizeNonPowerOfTwoHint(false);
-    _state.pool->setFilter(osg::Texture::MIN_FILTER, osg::Texture::LINEAR);
-    _state.pool->setFilter(osg::Texture::MAG_FILTER, osg::Texture::LINEAR);
-    for (auto wrap : {osg::Texture::WRAP_S, osg::Texture::WRAP_T, osg::Texture::WRAP_R})
-        _state.pool->setWrap(wrap, osg::Texture::CLAMP_TO_EDGE);
-    _state.pool->setSubloadCallback(new PoolUpload(_mirror));
+    _format = !budget.wide ? internalFormatFor(_source.type)
+              : _source.type == VoxelType::UInt8 ? GLenum(GL_R16)
+              : _source.type == VoxelType::Int8  ? GLenum(GL_R16_SNORM)
+                                                 : internalFormatFor(_source.type);
+    resizePool(std::min<std::size_t>(_maxCapacity, 64));  // grown to what plans need (GPUs allocate it whole)
 
     const osg::Vec3i& t = layout.tableSize;
     _table.assign(std::size_t(t.x()) * t.y() * t.z() * 4, 0.0f);
@@ -182,6 +158,62 @@ BrickStreamer::BrickStreamer(BrickSourceLevels source, const BrickBudget& budget
 
     const unsigned int threads = std::clamp(std::thread::hardware_concurrency(), 1u, 2u);
     for (unsigned int i = 0; i < threads; ++i) _threads.emplace_back([this] { loaderLoop(); });
+}
+
+std::size_t BrickStreamer::slotsWithin(std::size_t wanted) const
+{
+    const osg::Vec3i slots = poolBoxFor(wanted);
+    return std::size_t(slots.x()) * slots.y() * slots.z();
+}
+
+osg::Vec3i BrickStreamer::poolBoxFor(std::size_t wanted) const
+{
+    osg::Vec3i slots = poolSlotsFor(std::max<std::size_t>(1, wanted), _texels, _budget.maxTextureSize);
+    // Rounded up to a box of slots, the pool may pass the budget: fewer layers (or rows) then.
+    if (std::size_t(slots.x()) * slots.y() * slots.z() > _byBudget && _byBudget > 0) {
+        const std::size_t layer = std::size_t(slots.x()) * slots.y();
+        if (_byBudget >= layer) {
+            slots.z() = int(_byBudget / layer);
+        } else {
+            slots.z() = 1;
+            slots.y() = std::max(1, int(_byBudget / std::size_t(slots.x())));
+            if (std::size_t(slots.x()) > _byBudget) slots.x() = int(_byBudget), slots.y() = 1;
+        }
+    }
+    return slots;
+}
+
+void BrickStreamer::resizePool(std::size_t wanted)
+{
+    const osg::Vec3i slots = poolBoxFor(std::min(wanted, _maxCapacity));
+    const std::size_t capacity = std::min(_maxCapacity, std::size_t(slots.x()) * slots.y() * slots.z());
+    {
+        std::lock_guard<std::mutex> lock(_mirror->mutex);
+        std::unique_ptr<std::uint8_t[]> texels(new std::uint8_t[capacity * _slotBytes]);  // uninitialised: RAM for slots written only
+        for (std::size_t s = 0; s < std::min(capacity, _capacity); ++s)
+            if (_mirror->used[s]) std::memcpy(texels.get() + s * _slotBytes, _mirror->texels.get() + s * _slotBytes, _slotBytes);
+        _mirror->texels = std::move(texels);
+        _mirror->used.resize(capacity, false);
+        _mirror->slots = slots;
+        _mirror->changes.clear();
+        _mirror->uploaded.clear();  // a new texture: every context loads it whole
+    }
+    _capacity = capacity;
+    _slots.resize(capacity, std::nullopt);
+    _slotUsed.resize(capacity, 0);
+    _state.poolTexels = slots * _texels;
+    _state.pool = new osg::Texture3D;
+    _state.pool->setTextureSize(_state.poolTexels.x(), _state.poolTexels.y(), _state.poolTexels.z());
+    _state.pool->setInternalFormat(_format);
+    _state.pool->setResizeNonPowerOfTwoHint(false);
+    _state.pool->setFilter(osg::Texture::MIN_FILTER, osg::Texture::LINEAR);
+    _state.pool->setFilter(osg::Texture::MAG_FILTER, osg::Texture::LINEAR);
+    for (auto wrap : {osg::Texture::WRAP_S, osg::Texture::WRAP_T, osg::Texture::WRAP_R})
+        _state.pool->setWrap(wrap, osg::Texture::CLAMP_TO_EDGE);
+    _state.pool->setSubloadCallback(new PoolUpload(_mirror));
+    // Slots keep their numbers; their places in the new box move.
+    for (const auto& [id, slot] : _slotOf)
+        if (!_hidden.count(id)) setSlotEntry(id, slot);
 }
 
 BrickStreamer::~BrickStreamer()
@@ -328,7 +360,8 @@ void BrickStreamer::replan(int firstLevel, const std::optional<osg::Matrixd>& te
             return mayBeSeen(m, lo, hi);
         };
     }
-    _plan = planBricks(_state.layout, _source.ranges, firstLevel, _capacity, _source.constantBricks, visible, hidden);
+    _plan = planBricks(_state.layout, _source.ranges, firstLevel, _maxCapacity, _source.constantBricks, visible, hidden);
+    if (_plan.slotted.size() > _capacity) resizePool(_plan.slotted.size() + _plan.slotted.size() / 4);
     _plannedLevel = firstLevel;
     _plannedView = textureToClip;
     _plannedHiding = hiding ? hiding->key : std::string();
