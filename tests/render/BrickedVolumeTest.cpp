@@ -319,5 +319,36 @@ TEST_F(BrickedVolume, BricksTheTransferFunctionHidesAreNeverLoadedAndTheImageSta
     EXPECT_GT(scene->brickStatistics().front().resident, hiding.resident);
 }
 
+TEST_F(BrickedVolume, BudgetsOfOneFewAndEveryBrickSampleTheFinestLevelTheyHoldWhole)
+{
+    // Bricks of 64 voxels (66^3 16-bit texels, 575 KB a slot) of a 64^3 volume: every level is
+    // one brick, the coarsest (one voxel) constant, so it takes no slot. 1 MiB holds one slot:
+    // level 5 (2^3 voxels); 2 MiB three: levels 5, 4 and 3; 8 MiB all six others. Each image is
+    // the single texture's at that level.
+    osg::ref_ptr<Volume> volume = bytes([](int x, int y, int z) { return 40 + (x * 3 + y * 5 + z * 7) % 180; }, 64);
+    osg::ref_ptr<TransferFunction> tf =
+        transferFunction({{0, {0, 0, 0, 0}}, {100, {0.3f, 0.5f, 0.9f, 0.05f}}, {255, {1, 0.9f, 0.6f, 0.3f}}}, 0, 255);
+    osg::ref_ptr<VolumeNode> node = volumeNode(volume.get(), tf.get());
+    node->settings.brickSize = 64;
+    node->settings.texturePrecision = "16bit";
+    for (const auto& [budgetMB, level] : std::vector<std::pair<int, int>>{{1, 5}, {2, 3}, {8, 0}}) {
+        osg::ref_ptr<VolumeScene> scene = sceneOf(node.get());
+        node->settings.memoryBudgetMB = budgetMB;
+        node->settings.functions["VolumeStorage"] = "bricked";
+        node->settings.lod = 0;
+        const Pixels bricked = oblique(scene.get());
+        ASSERT_EQ(scene->brickStatistics().size(), 1u);
+        EXPECT_EQ(scene->brickStatistics().front().levelSampled, level) << budgetMB << " MiB";
+        EXPECT_EQ(scene->brickStatistics().front().resident, std::size_t(6 - level)) << budgetMB << " MiB";
+        EXPECT_EQ(scene->brickStatistics().front().constant, 1u) << budgetMB << " MiB";
+        node->settings.memoryBudgetMB = 0;
+        node->settings.functions["VolumeStorage"] = "texture";
+        node->settings.lod = level;
+        const Pixels single = oblique(scene.get());
+        EXPECT_LE(maxDifference(single, bricked), 1e-4) << budgetMB << " MiB";
+        EXPECT_GT(covered(single), 300) << budgetMB << " MiB";
+    }
+}
+
 }  // namespace
 }  // namespace volren::test

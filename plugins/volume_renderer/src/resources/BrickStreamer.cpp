@@ -170,6 +170,9 @@ osg::Vec3i BrickStreamer::poolBoxFor(std::size_t wanted) const
 {
     osg::Vec3i slots = poolSlotsFor(std::max<std::size_t>(1, wanted), _texels, _budget.maxTextureSize);
     // Rounded up to a box of slots, the pool may pass the budget: fewer layers (or rows) then.
+    const std::size_t perAxis = std::size_t(std::max(1, _budget.maxTextureSize / _texels));
+    if (std::size_t(slots.x()) * slots.y() * slots.z() > _byBudget && _byBudget > 0 && _byBudget <= perAxis)
+        return osg::Vec3i(int(_byBudget), 1, 1);  // a few slots: one row holds exactly the budget's
     if (std::size_t(slots.x()) * slots.y() * slots.z() > _byBudget && _byBudget > 0) {
         const std::size_t layer = std::size_t(slots.x()) * slots.y();
         if (_byBudget >= layer) {
