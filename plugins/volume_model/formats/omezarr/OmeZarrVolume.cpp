@@ -114,9 +114,10 @@ std::uint64_t omeZarrLevelBytes(const std::string& path, std::size_t level)
     return bytes;
 }
 
-osg::ref_ptr<Volume> openOmeZarrVolumeLazily(const std::string& path, std::uint64_t previewBudget, const osgDB::Options* options)
+osg::ref_ptr<Volume> openOmeZarrVolumeLazily(const std::string& path, std::uint64_t previewBudget, std::uint64_t cacheBudget,
+                                             const osgDB::Options* options)
 {
-    osg::ref_ptr<OmeZarrSource> source = new OmeZarrSource(path, OmeZarrSource::defaultCacheBytes, previewBudget, 0, 0, options);
+    osg::ref_ptr<OmeZarrSource> source = new OmeZarrSource(path, std::size_t(cacheBudget), previewBudget, 0, 0, options);
     const OmeZarrImage& image = source->image();
     const int level = previewLevelFor(*source, previewBudget);
     const osg::Vec3i dims = source->levelDims(level), full = source->levelDims(0);

@@ -32,11 +32,13 @@ std::uint64_t omeZarrLevelBytes(const std::string& path, std::size_t level);
 
 /// Opens the image at `path` lazily (LazyOpening.h): Volume::fullResolution() is an
 /// OmeZarrSource for channel 0, time point 0, and the voxels are its finest level (a file level or
-/// a reduction of the coarsest) whose bytes fit `previewBudget`, with spacing = level 0's world
+/// a reduction of the coarsest) whose bytes fit `previewBudget` (decoded chunks cached up to
+/// `cacheBudget` bytes), with spacing = level 0's world
 /// size / its dims (so the box is level 0's exactly; the file's own scale of a coarse level may
 /// differ slightly) and voxelToWorld placing its voxel centres in level 0's box. User values as
 /// readOmeZarrVolume. An image with several channels or time points stays one block (a notice
 /// says that only channel 0, time point 0 is read). Throws std::runtime_error("file: reason").
-osg::ref_ptr<Volume> openOmeZarrVolumeLazily(const std::string& path, std::uint64_t previewBudget, const osgDB::Options* options);
+osg::ref_ptr<Volume> openOmeZarrVolumeLazily(const std::string& path, std::uint64_t previewBudget, std::uint64_t cacheBudget,
+                                             const osgDB::Options* options);
 
 }  // namespace volren::omezarr

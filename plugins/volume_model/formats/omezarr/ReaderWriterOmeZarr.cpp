@@ -90,7 +90,7 @@ protected:
         const volren::LazyOpening lazy = volren::lazyOpeningOf(options);
         if (lazy.requested || (!level && volren::omezarr::omeZarrLevelBytes(path, 0) > lazy.ramBudget)) {
             if (level) OSG_NOTICE << path << ": option level=" << *level << " is ignored when opening lazily" << std::endl;
-            return ReadResult(volren::omezarr::openOmeZarrVolumeLazily(path, lazy.previewBudget(), options).get());
+            return ReadResult(volren::omezarr::openOmeZarrVolumeLazily(path, lazy.previewBudget(), lazy.chunkCacheBudget(), options).get());
         }
         return ReadResult(volren::omezarr::readOmeZarrVolume(path, level.value_or(0), options).get());
     }

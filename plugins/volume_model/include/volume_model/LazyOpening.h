@@ -6,6 +6,7 @@
 
 #include <osgDB/Options>
 
+#include <algorithm>
 #include <cstdint>
 
 namespace volren {
@@ -24,6 +25,8 @@ struct LazyOpening
     bool opensLazily(std::uint64_t bytes) const { return requested || bytes > ramBudget; }
     /// Bytes of the preview level: min(maxPreviewBytes, ramBudget / 8).
     std::uint64_t previewBudget() const;
+    /// Bytes of decoded chunks a lazy OME-Zarr keeps: min(256 MiB, ramBudget / 4).
+    std::uint64_t chunkCacheBudget() const { return std::min<std::uint64_t>(std::uint64_t(256) << 20, ramBudget / 4); }
 };
 
 /// The settings in `options`' option string (words `lazy`, `ramBudgetMB=N`); throws

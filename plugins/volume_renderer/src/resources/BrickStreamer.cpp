@@ -461,11 +461,12 @@ const BrickedVolume& BrickStreamer::update(int firstLevel, const std::optional<o
             if (_wanted.count(id) && !_slotOf.count(id)) return true;
         return false;
     };
+    std::size_t deferred = 0;  // bricks put back for a later frame: waiting is for new ones
     for (bool wait = missing();; wait = missing()) {
         std::vector<Loaded> done;
         {
             std::unique_lock<std::mutex> lock(_mutex);
-            if (wait) _idle.wait(lock, [this] { return !_done.empty() || (_queue.empty() && _busy == 0); });
+            if (wait) _idle.wait(lock, [&] { return _done.size() > deferred || (_queue.empty() && _busy == 0); });
             done.swap(_done);
             for (const Loaded& l : done) _requested.erase(l.id);
         }
@@ -475,9 +476,10 @@ const BrickedVolume& BrickStreamer::update(int firstLevel, const std::optional<o
             for (const Loaded& l : done) _requested[l.id] = true;
             _done.insert(_done.begin(), std::make_move_iterator(done.begin()), std::make_move_iterator(done.end()));
         }
+        deferred = done.size();
         if (!wait) break;
         std::lock_guard<std::mutex> lock(_mutex);
-        if (_queue.empty() && _busy == 0 && _done.empty() && missing()) break;  // nothing more will come
+        if (_queue.empty() && _busy == 0 && _done.size() == deferred && missing()) break;  // nothing more will come
     }
     if (_tableDirty) {
         _state.pageTable->getImage()->dirty();
