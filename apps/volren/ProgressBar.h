@@ -6,9 +6,11 @@
 
 namespace volren::app {
 
-/// A one-line progress bar on stderr ("loading NAME [####    ] 42%"), drawn once the task has
-/// taken over 0.5 s and cleared when the bar goes out of scope. Hand callback() to the reader
-/// or writer (withLoadProgress); it never cancels.
+/// Progress on stderr once the task has taken over 0.5 s (VOLREN_PROGRESS_DELAY=seconds
+/// overrides): on a terminal a one-line bar ("loading NAME [####    ] 42%") redrawn and cleared
+/// at the end; elsewhere (logs, pipes) a start line, a line per 10 % for tasks over 3 s and an
+/// end line with the time taken. Hand callback() to the reader or writer (withLoadProgress); it
+/// never cancels.
 class ProgressBar
 {
 public:
@@ -21,7 +23,10 @@ public:
 
 private:
     std::chrono::steady_clock::time_point _start;
-    int _shown = -1;  ///< percent last drawn; -1 until the task has taken 0.5 s
+    std::string _label;     ///< "loading NAME"
+    bool _terminal = true;  ///< stderr is a terminal
+    double _delay = 0.5;    ///< seconds before progress shows
+    int _shown = -1;        ///< percent last shown; -1 until the task has taken _delay
     LoadProgress _callback;
 };
 

@@ -11,31 +11,57 @@
 
 namespace {
 
-const char* const usage =
-    "usage:\n"
-    "  volren                          render the default scene to volren.png\n"
-    "  volren render INPUT -o OUT.png [--size WxH] [--eye x,y,z --center x,y,z --up x,y,z]\n"
-    "                [--fov DEG | --ortho HEIGHT] [--background r,g,b]\n"
-    "                [--tf FILE.tf | --tf PRESETS.json[#NAME] [--tf-keep-range]]\n"
-    "                [--set KEY=VALUE ...] [--frames N] [--samples N] [--stats FILE.json]\n"
-    "                [-O OPTION ...]   reader options: -O lazy (keep the file's finer levels on disk,\n"
-    "                read by brick), -O ramBudgetMB=N (files over N MiB open lazily; default: 1/4 of RAM)\n"
-    "  volren reference INPUT -o OUT.exr [render's options] [--normals central|exact]   CPU reference image\n"
-    "  volren compare A B [--threshold T] [--diff OUT]   RMSE, PSNR, max error, pixels over T\n"
-    "  volren info VOLUMEFILE [-O OPTION ...]   dims, type, spacing, value range, histogram\n"
-    "  volren convert IN OUT [--encoding raw|gzip] [-O KEY=VALUE ...]   read any volume file, write\n"
-    "                                OUT.nrrd, OUT.ome.zarr (multiscale pyramid; -O chunk=N,\n"
-    "                                -O compression=blosc-lz4|blosc-zstd|zlib|gzip|none) or\n"
-    "                                OUT.osgt/.osgb/.osgx (the volume's default scene)\n"
-    "  volren view [INPUT] [options]   interactive window (needs a display)\n"
-    "  volren shader [INPUT] [--set KEY=VALUE ...]   print each volume's composed ray caster\n"
-    "  volren bench [INPUT ...] [--size WxH[,WxH...]] [--frames N] [--out DIR] [--configs 'A;B'] [--vtk] [--tf FILE]\n"
-    "                [--tolerance T] [--normals central|exact] [--check-front]   speed against accuracy: table, CSV,\n"
-    "                JSON, plot; --check-front fails when a row beats the default on both axes\n"
-    "  volren permutations [--list] [--compile | --render] [--pairwise] [--max-instances N]\n"
-    "                [--max-lights N] [--shard I/N] [--first I] [--count N] [--stats FILE.json]\n"
-    "                [--dump DIR]   (with --render: each composition's source and image into DIR)\n"
-    "  volren render --help-settings   every --set KEY with its default, every implementation\n";
+/// Each command's usage, in the order `volren --help` lists them.
+const std::vector<std::pair<std::string, std::string>>& commandUsages()
+{
+    static const std::vector<std::pair<std::string, std::string>> usages = {
+        {"", "  volren                          render the default scene to volren.png\n"},
+        {"render",
+         "  volren render INPUT -o OUT.png [--size WxH] [--eye x,y,z --center x,y,z --up x,y,z]\n"
+         "                [--fov DEG | --ortho HEIGHT] [--background r,g,b]\n"
+         "                [--tf FILE.tf | --tf PRESETS.json[#NAME] [--tf-keep-range]]\n"
+         "                [--set KEY=VALUE ...] [--frames N] [--samples N] [--stats FILE.json]\n"
+         "                [-O OPTION ...]   reader options: -O lazy (keep the file's finer levels on disk,\n"
+         "                read by brick), -O ramBudgetMB=N (files over N MiB open lazily; default: 1/4 of RAM)\n"
+         "  volren render --help-settings   every --set KEY with its default, every implementation\n"},
+        {"reference", "  volren reference INPUT -o OUT.exr [render's options] [--normals central|exact]   CPU reference image\n"},
+        {"compare", "  volren compare A B [--threshold T] [--diff OUT]   RMSE, PSNR, max error, pixels over T\n"},
+        {"info", "  volren info VOLUMEFILE [-O OPTION ...]   dims, type, spacing, value range, histogram\n"},
+        {"convert",
+         "  volren convert IN OUT [--encoding raw|gzip] [-O KEY=VALUE ...]   read any volume file, write\n"
+         "                                OUT.nrrd, OUT.ome.zarr (multiscale pyramid; -O chunk=N,\n"
+         "                                -O compression=blosc-lz4|blosc-zstd|zlib|gzip|none) or\n"
+         "                                OUT.osgt/.osgb/.osgx (the volume's default scene)\n"},
+        {"view", "  volren view [INPUT] [render's options] [--screenshot OUT]   interactive window (needs a display)\n"},
+        {"shader", "  volren shader [INPUT] [--set KEY=VALUE ...]   print each volume's composed ray caster\n"},
+        {"bench",
+         "  volren bench [INPUT ...] [--size WxH[,WxH...]] [--frames N] [--out DIR] [--configs 'A;B'] [--vtk] [--tf FILE]\n"
+         "                [--tolerance T] [--normals central|exact] [--check-front]   speed against accuracy: table, CSV,\n"
+         "                JSON, plot; --check-front fails when a row beats the default on both axes\n"},
+        {"permutations",
+         "  volren permutations [--list] [--compile | --render] [--pairwise] [--max-instances N]\n"
+         "                [--max-lights N] [--shard I/N] [--first I] [--count N] [--stats FILE.json]\n"
+         "                [--dump DIR]   (with --render: each composition's source and image into DIR)\n"},
+        {"--help", "  volren --help | volren COMMAND --help | volren --version\n"},
+    };
+    return usages;
+}
+
+/// The usage of every command.
+std::string usage()
+{
+    std::string text = "usage:\n";
+    for (const auto& [command, lines] : commandUsages()) text += lines;
+    return text;
+}
+
+/// The usage of `command`, or of every command when it is not one.
+std::string usageOf(const std::string& command)
+{
+    for (const auto& [name, lines] : commandUsages())
+        if (name == command && !command.empty() && command != "--help") return "usage:\n" + lines;
+    return usage();
+}
 
 }  // namespace
 
@@ -54,6 +80,15 @@ int main(int argc, char** argv)
             std::cout << volren::settingsHelp(volren::CompositionPolicy());
             return 0;
         }
+        if (command == "--version" || command == "-V") {
+            std::cout << "volren " << VOLREN_VERSION << "\n";
+            return 0;
+        }
+        for (const std::string& a : args)  // volren COMMAND --help: that command's usage
+            if (a == "--help" || a == "-h") {
+                std::cout << usageOf(command);
+                return 0;
+            }
         if (command.empty()) return volren::app::renderCommand({}, true);
         if (command == "shader") return volren::app::shaderCommand(args);
         if (command == "permutations") return volren::app::permutationsCommand(args);
@@ -65,12 +100,12 @@ int main(int argc, char** argv)
         if (command == "view") return volren::app::viewCommand(args);
         if (command == "bench") return volren::app::benchCommand(args);
         if (command == "-h" || command == "--help" || command == "help") {
-            std::cout << usage;
+            std::cout << usage();
             return 0;
         }
         throw volren::app::UsageError("unknown command '" + command + "'");
     } catch (const volren::app::UsageError& e) {
-        std::cerr << "volren: " << e.what() << "\n" << usage;
+        std::cerr << "volren: " << e.what() << "\n" << usageOf(command);
         return 2;
     } catch (const std::exception& e) {
         std::cerr << "volren: error: " << e.what() << std::endl;

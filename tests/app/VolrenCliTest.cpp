@@ -575,5 +575,49 @@ TEST(VolrenCli, BadArgumentsExitWithUsageErrors)
     }
 }
 
+TEST(VolrenCli, EveryCommandHasHelpAndUnknownOptionsShowThatCommandsUsage)
+{
+    const CliRun version = volren("--version");
+    EXPECT_EQ(version.exitCode, 0);
+    EXPECT_EQ(version.output, std::string("volren ") + VOLREN_VERSION_TEXT + "\n");
+    const CliRun all = volren("--help");
+    EXPECT_EQ(all.exitCode, 0);
+    for (const char* command : {"render", "reference", "compare", "info", "convert", "view", "shader", "bench", "permutations"}) {
+        const CliRun help = volren(std::string(command) + " --help");
+        EXPECT_EQ(help.exitCode, 0) << command << "\n" << help.output;
+        const std::string own = std::string("volren ") + command + " ";
+        EXPECT_NE(help.output.find(own), std::string::npos) << command << "\n" << help.output;
+        EXPECT_NE(all.output.find(own), std::string::npos) << command;
+        // Only that command's usage, not the whole list.
+        const std::string other = std::string(command) == "info" ? "volren compare " : "volren info ";
+        EXPECT_EQ(help.output.find(other), std::string::npos) << command << "\n" << help.output;
+    }
+    const CliRun bad = volren("view --bogus");
+    EXPECT_EQ(bad.exitCode, 2);
+    EXPECT_NE(bad.output.find("unknown option '--bogus'"), std::string::npos) << bad.output;
+    EXPECT_NE(bad.output.find("volren view "), std::string::npos) << bad.output;
+    EXPECT_EQ(bad.output.find("volren bench "), std::string::npos) << bad.output;
+}
+
+TEST(VolrenCli, ProgressInALogIsAStartLineAndAnEndLineNotRedraws)
+{
+    // Output to a pipe (as in CI logs): no carriage-return redraws, a start and an end line
+    // (VOLREN_PROGRESS_DELAY=0 shows progress for this short load).
+    const std::string dir = tempDirectory();
+    {
+        std::ofstream out(dir + "/ramp.nrrd", std::ios::binary);
+        out << "NRRD0004\ntype: uint8\ndimension: 3\nsizes: 64 64 64\nencoding: raw\n\n";
+        for (int i = 0; i < 64 * 64 * 64; ++i) out.put(char(i % 251));
+    }
+    const CliRun run = volren("info ramp.nrrd", dir, "VOLREN_PROGRESS_DELAY=0 ");
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    EXPECT_EQ(run.output.find('\r'), std::string::npos) << run.output;
+    const std::size_t start = run.output.find("loading ramp.nrrd ...\n"), end = run.output.find("loading ramp.nrrd: done in ");
+    EXPECT_NE(start, std::string::npos) << run.output;
+    EXPECT_NE(end, std::string::npos) << run.output;
+    EXPECT_LT(start, end);
+    EXPECT_EQ(volren("info ramp.nrrd", dir).output.find("loading ramp.nrrd"), std::string::npos) << "quick loads stay quiet";
+}
+
 }  // namespace
 }  // namespace volren::test
