@@ -4,8 +4,14 @@
 #include "TestData.h"
 
 #include <osg/BlendFunc>
+#include <osg/Geode>
+#include <osg/LightSource>
+#include <osg/MatrixTransform>
+#include <osg/ShapeDrawable>
 
 #include <cmath>
+#include <cstdlib>
+#include <string>
 
 namespace volren::test {
 namespace {
@@ -292,6 +298,36 @@ TEST_F(OpaqueGeometry, IsosurfaceHidesThePartOfAPlaneBehindItAndLeavesItsDepth)
         }
     EXPECT_GT(front, 200);
     EXPECT_GT(plane, 200);
+}
+
+TEST_F(OpaqueGeometry, AModelUnderAScalingTransformIsLitAsAtUnitScale)
+{
+    // A lit sphere of radius 1 scaled 20x looks exactly like a sphere of radius 20: its normals
+    // are renormalised (without, they are 20 long and the fixed-function light saturates).
+    if (const char* profile = std::getenv("VOLREN_GL_PROFILE"); profile && std::string(profile) == "core")
+        GTEST_SKIP() << "fixed-function lighting: compatibility contexts only";
+    auto sphereScene = [](float radius, double scale) {
+        osg::ref_ptr<osg::Geode> geode = new osg::Geode;
+        geode->addDrawable(new osg::ShapeDrawable(new osg::Sphere(osg::Vec3(), radius)));
+        osg::ref_ptr<osg::MatrixTransform> placed = new osg::MatrixTransform(osg::Matrix::scale(scale, scale, scale));
+        placed->addChild(geode.get());
+        osg::ref_ptr<VolumeScene> scene = new VolumeScene;
+        scene->addChild(placed.get());
+        osg::ref_ptr<osg::LightSource> light = new osg::LightSource;
+        light->getLight()->setPosition(osg::Vec4(0.3f, 0.4f, 1.0f, 0.0f));
+        scene->addChild(light.get());
+        return scene;
+    };
+    const Pixels scaled = renderOrthoFromPlusZ(sphereScene(1.0f, 20.0).get(), 48, 48, 50.0);
+    const Pixels unit = renderOrthoFromPlusZ(sphereScene(20.0f, 1.0).get(), 48, 48, 50.0);
+    float worst = 0.0f, brightest = 0.0f;
+    for (std::size_t i = 0; i < unit.rgba.size(); ++i)
+        for (int c = 0; c < 3; ++c) {
+            worst = std::max(worst, std::abs(unit.rgba[i][c] - scaled.rgba[i][c]));
+            brightest = std::max(brightest, unit.rgba[i][c]);
+        }
+    EXPECT_GT(brightest, 0.3f) << "the sphere is lit";
+    EXPECT_LE(worst, 2e-3f);
 }
 
 }  // namespace

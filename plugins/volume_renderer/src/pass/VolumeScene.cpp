@@ -29,6 +29,7 @@ struct VolumeScene::Pass
     std::set<std::vector<const VolumeNode*>> warnedOverlaps;
     std::vector<std::string> lastKeys;
     unsigned int cull = 0;
+    osg::ref_ptr<osg::StateSet> normalizing;  ///< GL_NORMALIZE for the models below (compatibility contexts)
 
     /// Culls `proxy` placed by `matrix`, with the per-camera screen data its program needs.
     void draw(osgUtil::CullVisitor& cv, VolumeProxy& proxy, const osg::Matrix& matrix, const VolumeNode* node,
@@ -97,8 +98,20 @@ VolumeScene::~VolumeScene() = default;
 
 void VolumeScene::traverse(osg::NodeVisitor& nv)
 {
-    osg::Group::traverse(nv);
     auto* cv = nv.asCullVisitor();
+    // Models placed under a scaling transform keep unit normals, so they are lit as at unit
+    // scale (fixed-function lighting of a compatibility context; a core profile has no such
+    // mode and its shaders normalise themselves).
+    const bool normalize = cv && cv->getState() && !cv->getState()->getUseVertexAttributeAliasing();
+    if (normalize) {
+        if (!_state->normalizing) {
+            _state->normalizing = new osg::StateSet;
+            _state->normalizing->setMode(GL_NORMALIZE, osg::StateAttribute::ON);
+        }
+        cv->pushStateSet(_state->normalizing.get());
+    }
+    osg::Group::traverse(nv);
+    if (normalize) cv->popStateSet();
     if (!cv) return;
 
     std::vector<VolumeCandidate> candidates =
