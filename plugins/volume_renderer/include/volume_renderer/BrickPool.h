@@ -7,6 +7,7 @@
 #include <volume_renderer/MacrocellGrid.h>
 
 #include <osg/Image>
+#include <osg/Matrixd>
 #include <osg/Texture3D>
 
 #include <cstddef>
@@ -80,6 +81,10 @@ struct BrickPlan
 
 /// Whether a brick of a level may be seen (the view's frustum); every brick when empty.
 using BrickVisibility = std::function<bool(int level, const osg::Vec3i& brick)>;
+/// The bricks of `layout` (kept alive by the caller) that may be seen through the sides of the
+/// view `textureToClip` (volume texture space -> clip space), each with its border; near and far
+/// are not tested (OSG fits them after culling).
+BrickVisibility brickVisibility(const BrickLayout& layout, const osg::Matrixd& textureToClip);
 /// For a brick whose every sample the transfer function hides, the texel value its page entry
 /// holds instead (a value the TF hides); nothing for a brick that may show or is not known.
 using BrickHiding = std::function<std::optional<float>(int level, const osg::Vec3i& brick)>;

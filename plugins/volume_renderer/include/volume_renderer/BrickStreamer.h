@@ -22,6 +22,8 @@
 
 namespace volren {
 
+struct BrickPoolMirror;  // the pool's texels in RAM (src/resources/BrickPoolTexture.h)
+
 /// Where a bricked volume's voxels come from.
 struct BrickSourceLevels
 {
@@ -84,8 +86,6 @@ public:
     BrickStatistics statistics(const std::string& volume) const;
     /// Changes the per-frame upload limit and whether frames wait (volren view streams).
     void setStreaming(std::size_t uploadBytesPerFrame, bool complete);
-    /// The pool's texels in RAM and what each GL context has yet to receive (BrickStreamer.cpp).
-    struct Mirror;
 
 protected:
     ~BrickStreamer() override;
@@ -124,7 +124,7 @@ private:
     BrickedVolume _state;
     std::vector<float> _table;   ///< page table texels (RGBA), mirrored in _state.pageTable's image
     bool _tableDirty = false;
-    std::shared_ptr<Mirror> _mirror;  ///< the pool's texels in RAM, shared with the upload callback
+    std::shared_ptr<BrickPoolMirror> _mirror;  ///< the pool's texels in RAM, shared with the upload callback
 
     // The plan and where each brick stands.
     int _plannedLevel = -1;

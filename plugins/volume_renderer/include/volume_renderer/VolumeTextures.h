@@ -9,6 +9,8 @@ namespace volren {
 
 /// GL internal format keeping a voxel type's precision: R8, R8_SNORM, R16, R16_SNORM, R32F.
 GLenum internalFormatFor(VoxelType type);
+/// The internal format of a volume texture of `type`: 8-bit data in 16-bit texels when `wide`.
+GLenum volumeTextureFormat(VoxelType type, bool wide);
 
 /// GL pixel type of a voxel type's stored values.
 GLenum pixelTypeFor(VoxelType type);

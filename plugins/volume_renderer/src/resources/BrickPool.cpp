@@ -65,7 +65,42 @@ bool isConstant(const MacrocellGrid& g, std::size_t i)
     return g.lo[i] == g.hi[i] || g.lo[i] > g.hi[i];
 }
 
+/// Whether the box [lo, hi] (texture space) may be seen through the sides of the view of `m`
+/// (texture -> clip space). Near and far are not tested: OSG fits them after culling.
+bool mayBeSeen(const osg::Matrixd& m, const osg::Vec3d& lo, const osg::Vec3d& hi)
+{
+    int outside[4] = {0, 0, 0, 0}, behind = 0;
+    for (int c = 0; c < 8; ++c) {
+        const osg::Vec4d p = osg::Vec4d(c & 1 ? hi.x() : lo.x(), c & 2 ? hi.y() : lo.y(), c & 4 ? hi.z() : lo.z(), 1.0) * m;
+        if (p.w() <= 0.0) {
+            ++behind;
+            continue;
+        }
+        for (int a = 0; a < 2; ++a) {
+            outside[2 * a] += p[a] < -p.w();
+            outside[2 * a + 1] += p[a] > p.w();
+        }
+    }
+    if (behind == 8) return false;  // wholly behind the eye
+    if (behind > 0) return true;    // around the eye: kept
+    return std::none_of(std::begin(outside), std::end(outside), [](int n) { return n == 8; });
+}
+
 }  // namespace
+
+BrickVisibility brickVisibility(const BrickLayout& layout, const osg::Matrixd& textureToClip)
+{
+    return [&layout, m = textureToClip](int level, const osg::Vec3i& b) {
+        const BrickLevel& l = layout.levels[std::size_t(level)];
+        const int s = layout.brickSize;
+        osg::Vec3d lo, hi;
+        for (int a = 0; a < 3; ++a) {
+            lo[a] = std::max(0.0, double(b[a] * s - 1) / l.dims[a]);
+            hi[a] = std::min(1.0, double((b[a] + 1) * s + 1) / l.dims[a]);
+        }
+        return mayBeSeen(m, lo, hi);
+    };
+}
 
 BrickPlan planBricks(const BrickLayout& layout, const std::vector<MacrocellGrid>& ranges, int firstLevel,
                      std::size_t capacity, bool constantBricks, const BrickVisibility& visible, const BrickHiding& hidden)

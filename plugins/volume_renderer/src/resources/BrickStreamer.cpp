@@ -1,11 +1,11 @@
 // A bricked volume's pool kept filled by loader threads (BrickStreamer.h).
 #include <volume_renderer/BrickStreamer.h>
+
 #include <volume_renderer/VolumeTextures.h>
 
-#include <osg/GLExtensions>
+#include "BrickPoolTexture.h"
+
 #include <osg/Notify>
-#include <osg/State>
-#include <osg/Texture3D>
 
 #include <algorithm>
 #include <chrono>
@@ -15,109 +15,8 @@
 
 namespace volren {
 
-/// The pool's texels in RAM (slot after slot) and which slots each GL context has yet to
-/// receive: a context made later (a second viewer) or that missed trimmed changes gets them all.
-struct BrickStreamer::Mirror
-{
-    std::mutex mutex;
-    /// Uninitialised, so RAM is taken only by the slots written (the pool is sized for the
-    /// budget, the plan may use a fraction of it).
-    std::unique_ptr<std::uint8_t[]> texels;
-    std::size_t slotBytes = 0;
-    int slotTexels = 0;
-    osg::Vec3i slots;
-    GLenum pixelType = GL_UNSIGNED_BYTE;
-    std::vector<bool> used;
-    unsigned long long sequence = 0;                        ///< changes so far
-    std::deque<std::pair<unsigned long long, int>> changes;  ///< (sequence, slot), oldest first
-    std::map<unsigned int, unsigned long long> uploaded;   ///< per context: the last change it has
-
-    void write(int slot, const std::vector<std::uint8_t>& data)
-    {
-        std::lock_guard<std::mutex> lock(mutex);
-        std::memcpy(texels.get() + std::size_t(slot) * slotBytes, data.data(), slotBytes);
-        used[std::size_t(slot)] = true;
-        changes.emplace_back(++sequence, slot);
-        if (changes.size() > 2 * used.size()) {  // a context stopped drawing: it reloads all if it comes back
-            changes.clear();
-            uploaded.clear();
-        }
-    }
-
-    void upload(osg::State& state, bool all)
-    {
-        std::lock_guard<std::mutex> lock(mutex);
-        const unsigned int context = state.getContextID();
-        auto it = uploaded.find(context);
-        all = all || it == uploaded.end() || (!changes.empty() && it->second + 1 < changes.front().first);
-        const osg::GLExtensions* gl = state.get<osg::GLExtensions>();
-        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-        glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
-        glPixelStorei(GL_UNPACK_IMAGE_HEIGHT, 0);
-        auto send = [&](int s) {
-            const int x = s % slots.x(), y = s / slots.x() % slots.y(), z = s / (slots.x() * slots.y());
-            gl->glTexSubImage3D(GL_TEXTURE_3D, 0, x * slotTexels, y * slotTexels, z * slotTexels, slotTexels, slotTexels,
-                                slotTexels, GL_RED, pixelType, texels.get() + std::size_t(s) * slotBytes);
-        };
-        if (all) {
-            for (std::size_t s = 0; s < used.size(); ++s)
-                if (used[s]) send(int(s));
-        } else {
-            for (const auto& [seq, slot] : changes)
-                if (seq > it->second) send(slot);
-        }
-        uploaded[context] = sequence;
-        unsigned long long oldest = sequence;
-        for (const auto& [c, seq] : uploaded) oldest = std::min(oldest, seq);
-        while (!changes.empty() && changes.front().first <= oldest) changes.pop_front();
-    }
-};
-
-namespace {
-
-/// Allocates the pool's storage on a context's first use and sends it the bricks it lacks.
-class PoolUpload : public osg::Texture3D::SubloadCallback
-{
-public:
-    explicit PoolUpload(std::shared_ptr<BrickStreamer::Mirror> mirror) : _mirror(std::move(mirror)) {}
-    void load(const osg::Texture3D& texture, osg::State& state) const override
-    {
-        state.get<osg::GLExtensions>()->glTexImage3D(GL_TEXTURE_3D, 0, texture.getInternalFormat(), texture.getTextureWidth(),
-                                                     texture.getTextureHeight(), texture.getTextureDepth(), 0, GL_RED,
-                                                     _mirror->pixelType, nullptr);
-        _mirror->upload(state, true);
-    }
-    void subload(const osg::Texture3D&, osg::State& state) const override { _mirror->upload(state, false); }
-
-private:
-    std::shared_ptr<BrickStreamer::Mirror> _mirror;
-};
-
-/// Whether the box [lo, hi] (texture space) may be seen through the sides of the view of `m`
-/// (texture -> clip space). Near and far are not tested: OSG fits them after culling.
-bool mayBeSeen(const osg::Matrixd& m, const osg::Vec3d& lo, const osg::Vec3d& hi)
-{
-    int outside[4] = {0, 0, 0, 0}, behind = 0;
-    for (int c = 0; c < 8; ++c) {
-        const osg::Vec4d p = osg::Vec4d(c & 1 ? hi.x() : lo.x(), c & 2 ? hi.y() : lo.y(), c & 4 ? hi.z() : lo.z(), 1.0) * m;
-        if (p.w() <= 0.0) {
-            ++behind;
-            continue;
-        }
-        for (int a = 0; a < 2; ++a) {
-            outside[2 * a] += p[a] < -p.w();
-            outside[2 * a + 1] += p[a] > p.w();
-        }
-    }
-    if (behind == 8) return false;  // wholly behind the eye
-    if (behind > 0) return true;    // around the eye: kept
-    return std::none_of(std::begin(outside), std::end(outside), [](int n) { return n == 8; });
-}
-
-}  // namespace
-
 BrickStreamer::BrickStreamer(BrickSourceLevels source, const BrickBudget& budget)
-    : _source(std::move(source)), _budget(budget), _mirror(std::make_shared<Mirror>())
+    : _source(std::move(source)), _budget(budget), _mirror(std::make_shared<BrickPoolMirror>())
 {
     _state.layout = brickLayout(_source.levelDims, budget.brickSize);
     const BrickLayout& layout = _state.layout;
@@ -143,10 +42,7 @@ BrickStreamer::BrickStreamer(BrickSourceLevels source, const BrickBudget& budget
     _mirror->slotBytes = _slotBytes;
     _mirror->slotTexels = _texels;
     _mirror->pixelType = pixelTypeFor(_source.type);
-    _format = !budget.wide ? internalFormatFor(_source.type)
-              : _source.type == VoxelType::UInt8 ? GLenum(GL_R16)
-              : _source.type == VoxelType::Int8  ? GLenum(GL_R16_SNORM)
-                                                 : internalFormatFor(_source.type);
+    _format = volumeTextureFormat(_source.type, budget.wide);
     resizePool(std::min<std::size_t>(_maxCapacity, 64));  // grown to what plans need (GPUs allocate it whole)
 
     const osg::Vec3i& t = layout.tableSize;
@@ -205,15 +101,7 @@ void BrickStreamer::resizePool(std::size_t wanted)
     _slots.resize(capacity, std::nullopt);
     _slotUsed.resize(capacity, 0);
     _state.poolTexels = slots * _texels;
-    _state.pool = new osg::Texture3D;
-    _state.pool->setTextureSize(_state.poolTexels.x(), _state.poolTexels.y(), _state.poolTexels.z());
-    _state.pool->setInternalFormat(_format);
-    _state.pool->setResizeNonPowerOfTwoHint(false);
-    _state.pool->setFilter(osg::Texture::MIN_FILTER, osg::Texture::LINEAR);
-    _state.pool->setFilter(osg::Texture::MAG_FILTER, osg::Texture::LINEAR);
-    for (auto wrap : {osg::Texture::WRAP_S, osg::Texture::WRAP_T, osg::Texture::WRAP_R})
-        _state.pool->setWrap(wrap, osg::Texture::CLAMP_TO_EDGE);
-    _state.pool->setSubloadCallback(new PoolUpload(_mirror));
+    _state.pool = makeBrickPoolTexture(_mirror, _state.poolTexels, _format);
     // Slots keep their numbers; their places in the new box move.
     for (const auto& [id, slot] : _slotOf)
         if (!_hidden.count(id)) setSlotEntry(id, slot);
@@ -349,20 +237,7 @@ void BrickStreamer::replan(int firstLevel, const std::optional<osg::Matrixd>& te
             return g.lo[i];
         };
     }
-    BrickVisibility visible;
-    if (textureToClip) {
-        const BrickLayout& layout = _state.layout;
-        visible = [&layout, m = *textureToClip](int level, const osg::Vec3i& b) {
-            const BrickLevel& l = layout.levels[std::size_t(level)];
-            const int s = layout.brickSize;
-            osg::Vec3d lo, hi;
-            for (int a = 0; a < 3; ++a) {
-                lo[a] = std::max(0.0, double(b[a] * s - 1) / l.dims[a]);
-                hi[a] = std::min(1.0, double((b[a] + 1) * s + 1) / l.dims[a]);
-            }
-            return mayBeSeen(m, lo, hi);
-        };
-    }
+    const BrickVisibility visible = textureToClip ? brickVisibility(_state.layout, *textureToClip) : BrickVisibility{};
     _plan = planBricks(_state.layout, _source.ranges, firstLevel, _maxCapacity, _source.constantBricks, visible, hidden);
     if (_plan.slotted.size() > _capacity) resizePool(_plan.slotted.size() + _plan.slotted.size() / 4);
     _plannedLevel = firstLevel;

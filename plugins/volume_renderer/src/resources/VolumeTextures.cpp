@@ -28,13 +28,18 @@ GLenum internalFormatFor(VoxelType type)
     return GL_R8;
 }
 
+GLenum volumeTextureFormat(VoxelType type, bool wide)
+{
+    return !wide ? internalFormatFor(type)
+           : type == VoxelType::UInt8 ? GLenum(GL_R16)
+           : type == VoxelType::Int8  ? GLenum(GL_R16_SNORM)
+                                      : internalFormatFor(type);
+}
+
 osg::ref_ptr<osg::Texture3D> makeVolumeTexture(const Volume& volume, bool wide, osg::Image* level)
 {
     // 8-bit data as 16-bit texels: GL converts on upload, v / 255 becomes v * 257 / 65535, the same value.
-    const GLenum format = !wide ? internalFormatFor(volume.type())
-                          : volume.type() == VoxelType::UInt8 ? GLenum(GL_R16)
-                          : volume.type() == VoxelType::Int8  ? GLenum(GL_R16_SNORM)
-                                                              : internalFormatFor(volume.type());
+    const GLenum format = volumeTextureFormat(volume.type(), wide);
     osg::ref_ptr<osg::Image> image = level;
     if (!image) {
         image = new osg::Image;
