@@ -17,6 +17,7 @@ packages=(
   mricron-data
   xvfb xauth netpbm
   libimgui-dev
+  python3-dev python3-numpy pybind11-dev
 )
 
 # The fuzzers (tests/fuzz, optional) need clang and its libFuzzer runtime: VOLREN_SETUP_FUZZ=1.

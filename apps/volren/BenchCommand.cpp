@@ -19,6 +19,7 @@
 
 #include <osg/GLExtensions>
 #include <osgDB/FileNameUtils>
+#include <osgDB/FileUtils>
 
 #include <algorithm>
 #include <chrono>
@@ -171,6 +172,19 @@ BenchOptions parseBenchOptions(const std::vector<std::string>& args)
     return o;
 }
 
+/// The files of one bench dataset: "" none (the default scene), "ct.nii.gz+tool.obj" several
+/// combined into one scene (unless a file of that very name exists).
+std::vector<std::string> datasetFiles(const std::string& dataset)
+{
+    if (dataset.empty()) return {};
+    if (osgDB::fileExists(dataset)) return {dataset};
+    std::vector<std::string> files;
+    std::stringstream list(dataset);
+    for (std::string file; std::getline(list, file, '+');)
+        if (!file.empty()) files.push_back(file);
+    return files;
+}
+
 /// One dataset at one size: its scene, the renderer, the camera, and the truths computed so far.
 class BenchRun
 {
@@ -179,7 +193,7 @@ public:
         : _options(options), _width(width), _height(height), _renderer(width, height)
     {
         RenderOptions ro;
-        ro.input = input;
+        ro.inputs = datasetFiles(input);
         ro.width = width;
         ro.height = height;
         ro.tfFile = options.tf;

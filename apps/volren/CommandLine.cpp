@@ -39,6 +39,25 @@ osg::Vec3d parseVec3(const std::string& text, const std::string& what)
     return osg::Vec3d(values[0], values[1], values[2]);
 }
 
+std::pair<std::size_t, Placement> parsePlaceOption(const std::string& text)
+{
+    const std::size_t colon = text.find(':');
+    if (colon == std::string::npos) throw UsageError("--place: expected N:tx,ty,tz[:scale][:axis,angle], got '" + text + "'");
+    const int n = parseInt(text.substr(0, colon), "--place input number", 1, 100000);
+    try {
+        return {std::size_t(n - 1), parsePlacement(text.substr(colon + 1))};
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(std::string("--place ") + e.what());
+    }
+}
+
+void checkPlacedInput(std::size_t index, std::size_t inputs)
+{
+    if (index >= inputs)
+        throw UsageError("--place " + std::to_string(index + 1) + ": there " + (inputs == 1 ? "is " : "are ") +
+                         std::to_string(inputs) + " input" + (inputs == 1 ? "" : "s"));
+}
+
 RenderOptions parseRenderOptions(const std::vector<std::string>& args, bool requireOutput)
 {
     RenderOptions o;
@@ -62,8 +81,26 @@ RenderOptions parseRenderOptions(const std::vector<std::string>& args, bool requ
             o.fov = parseNumber(value(i), "--fov");
             if (!(*o.fov > 0.0 && *o.fov < 180.0)) throw UsageError("--fov: must be in (0, 180) degrees");
         } else if (a == "--ortho") {
-            o.orthoHeight = parseNumber(value(i), "--ortho");
-            if (!(*o.orthoHeight > 0.0)) throw UsageError("--ortho: height must be positive");
+            o.ortho = true;
+            if (const std::string& v = value(i); v != "fit") {
+                o.orthoHeight = parseNumber(v, "--ortho");
+                if (!(*o.orthoHeight > 0.0)) throw UsageError("--ortho: height must be positive (or 'fit')");
+            }
+        } else if (a == "--place") {
+            const auto [n, placement] = parsePlaceOption(value(i));
+            o.placements[n] = placement;
+        } else if (a == "--time") {
+            const std::string& v = value(i);
+            if (v == "all") o.everyTime = true;
+            else o.time = parseInt(v, "--time", 0, 1000000);
+        } else if (a == "--turntable") o.turntable = parseInt(value(i), "--turntable", 1, 100000);
+        else if (a == "--axis") {
+            const std::string& v = value(i);
+            if (v == "x") o.turntableAxis.set(1, 0, 0);
+            else if (v == "y") o.turntableAxis.set(0, 1, 0);
+            else if (v == "z") o.turntableAxis.set(0, 0, 1);
+            else o.turntableAxis = parseVec3(v, "--axis");
+            if (o.turntableAxis.length() == 0.0) throw UsageError("--axis: must not be zero");
         } else if (a == "--tf") o.tfFile = value(i);
         else if (a == "--tf-keep-range") o.tfKeepRange = true;
         else if (a == "--background") {
@@ -82,10 +119,11 @@ RenderOptions parseRenderOptions(const std::vector<std::string>& args, bool requ
         else if (a == "--stats") o.statsFile = value(i);
         else if (a == "-O" || a == "--option") o.readerOptions += (o.readerOptions.empty() ? "" : " ") + value(i);
         else if (!a.empty() && a[0] == '-') throw UsageError("unknown option '" + a + "'");
-        else if (o.input.empty()) o.input = a;
-        else throw UsageError("unexpected argument '" + a + "' (input is already '" + o.input + "')");
+        else o.inputs.push_back(a);
     }
-    if (o.fov && o.orthoHeight) throw UsageError("--fov and --ortho exclude each other");
+    if (o.fov && o.ortho) throw UsageError("--fov and --ortho exclude each other");
+    if (o.everyTime && o.time) throw UsageError("--time: give one time point or 'all'");
+    for (const auto& [n, placement] : o.placements) checkPlacedInput(n, o.inputs.size());
     if (requireOutput && o.output.empty()) throw UsageError("missing -o OUT (e.g. -o image.png)");
     return o;
 }

@@ -1,6 +1,7 @@
 #include "Commands.h"
 #include "ImageWriter.h"
 #include "SceneSetup.h"
+#include "Sequence.h"
 
 #include <volume_renderer/OffscreenRenderer.h>
 
@@ -40,18 +41,27 @@ int renderCommand(const std::vector<std::string>& args, bool defaultRun)
     setUpCamera(*renderer.camera(), *scene, options, double(options.width) / options.height);
 
     std::vector<FrameTiming> frames;
-    for (int i = 0; i < options.frames; ++i) frames.push_back(renderer.renderFrame());
-    // Streaming bricks (--set streamBricks=on): frames go on until every brick they plan is in
-    // its pool, so the image written is the converged one, as without streaming.
     std::vector<FrameTiming> streamed;
     const auto streamStart = std::chrono::steady_clock::now();
-    if (VolumeScene* volumes = renderer.volumeScene(); volumes && volumes->pass.streamBricks)
-        while (volumes->pendingBricks() > 0) {
-            volumes->waitForBricks(1.0);
-            streamed.push_back(renderer.renderFrame());
-        }
+    // Streaming bricks (--set streamBricks=on): frames go on until every brick they plan is in
+    // its pool, so the image written is the converged one, as without streaming.
+    auto converge = [&] {
+        if (VolumeScene* volumes = renderer.volumeScene(); volumes && volumes->pass.streamBricks)
+            while (volumes->pendingBricks() > 0) {
+                volumes->waitForBricks(1.0);
+                streamed.push_back(renderer.renderFrame());
+            }
+    };
+    for (int i = 0; i < options.frames; ++i) frames.push_back(renderer.renderFrame());
+    converge();
     const double streamMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - streamStart).count();
-    writeImage(*renderer.image(), options.output);
+    std::string written;
+    if (isSequence(options)) {
+        written = renderSequence(renderer, *scene, options, converge, frames);
+    } else {
+        writeImage(*renderer.image(), options.output);
+        written = osgDB::getRealPath(options.output);
+    }
 
     if (!options.statsFile.empty()) {
         nlohmann::json stats;
@@ -105,8 +115,8 @@ int renderCommand(const std::vector<std::string>& args, bool defaultRun)
         if (!out) throw std::runtime_error(options.statsFile + ": cannot write statistics");
     }
 
-    std::cout << "volren: wrote " << osgDB::getRealPath(options.output) << " (" << options.width << "x"
-              << options.height << ", " << input << ")" << std::endl;
+    std::cout << "volren: wrote " << written << " (" << options.width << "x" << options.height << ", " << input << ")"
+              << std::endl;
     return 0;
 }
 

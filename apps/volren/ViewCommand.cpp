@@ -123,7 +123,19 @@ int viewCommand(const std::vector<std::string>& args)
         viewer.addEventHandler(new EditorToggle(overlay->node()));
         viewer.addEventHandler(new InteractionQuality(node));
     }
-    viewer.setCameraManipulator(new Trackball);
+    // Home (the space bar) is the framed view volren render would take, not OSG's bounding sphere.
+    osg::ref_ptr<Trackball> trackball = new Trackball;
+    {
+        const CameraView framed = frameScene(*root, cameraRequest(options), double(options.width) / options.height);
+        osg::Vec3d eye, ahead, up;
+        framed.view.getLookAt(eye, ahead, up, 1.0);
+        const osg::Vec3d forward = ahead - eye;  // the trackball turns about the box centre's depth
+        const osg::Vec3d centre = eye + forward * std::max((sceneBoundingBox(*root).center() - eye) * forward, 1e-6);
+        trackball->setAutoComputeHomePosition(false);
+        trackball->setHomePosition(eye, centre, up);
+        viewer.getCamera()->setProjectionMatrix(framed.projection);
+    }
+    viewer.setCameraManipulator(trackball.get());
     viewer.addEventHandler(new osgViewer::StatsHandler);          // 's': frame time
     viewer.addEventHandler(new osgViewer::ScreenCaptureHandler);  // 'c': screenshot
     viewer.getCamera()->setClearColor(osg::Vec4(options.background, 1.0f));

@@ -17,27 +17,37 @@ const std::vector<std::pair<std::string, std::string>>& commandUsages()
     static const std::vector<std::pair<std::string, std::string>> usages = {
         {"", "  volren                          render the default scene to volren.png\n"},
         {"render",
-         "  volren render INPUT -o OUT.png [--size WxH] [--eye x,y,z --center x,y,z --up x,y,z]\n"
-         "                [--fov DEG | --ortho HEIGHT] [--background r,g,b]\n"
-         "                [--tf FILE.tf | --tf PRESETS.json[#NAME] [--tf-keep-range]]\n"
+         "  volren render [INPUT ...] -o OUT.png [--size WxH] [--eye x,y,z --center x,y,z --up x,y,z]\n"
+         "                [--fov DEG | --ortho fit|HEIGHT] [--background r,g,b] [--place N:PLACEMENT ...]\n"
+         "                [--tf FILE.tf|FILE.vp|FILE.lut | --tf PRESETS.json[#NAME] [--tf-keep-range]]\n"
          "                [--set KEY=VALUE ...] [--frames N] [--samples N] [--stats FILE.json]\n"
-         "                [-O OPTION ...]   reader options: -O lazy (keep the file's finer levels on disk,\n"
-         "                read by brick), -O ramBudgetMB=N (files over N MiB open lazily; default: 1/4 of RAM)\n"
+         "                [--turntable N [--axis x|y|z|ax,ay,az]] [--time K|all] [-O OPTION ...]\n"
+         "                INPUT: scene (.osgt/.osgb/.osgx), volume or model (.obj, .ply, .stl, .osg, ...) files,\n"
+         "                combined in one scene (none: the default scene); PLACEMENT of input N (1 = first):\n"
+         "                tx,ty,tz[:s|:sx,sy,sz][:x|y|z|ax,ay,az,DEGREES] (scaled, rotated, then moved)\n"
+         "                --turntable N: N frames around the scene, OUT_0001.png ... (OUT.gif: one animated GIF)\n"
+         "                --time K: time point K (from 0) of time-series volumes; all: a frame per time point\n"
+         "                (with --turntable N, the time points spread over its N frames)\n"
+         "                -O: reader options: -O lazy (keep the file's finer levels on disk, read by brick),\n"
+         "                -O ramBudgetMB=N (files over N MiB open lazily; default: 1/4 of RAM)\n"
          "  volren render --help-settings   every --set KEY with its default, every implementation\n"},
-        {"reference", "  volren reference INPUT -o OUT.exr [render's options] [--normals central|exact]   CPU reference image\n"},
+        {"reference", "  volren reference [INPUT ...] -o OUT.exr [render's options] [--normals central|exact]   CPU reference image\n"},
         {"compare", "  volren compare A B [--threshold T] [--diff OUT]   RMSE, PSNR, max error, pixels over T\n"},
         {"info", "  volren info VOLUMEFILE [-O OPTION ...]   dims, type, spacing, value range, histogram\n"},
         {"convert",
          "  volren convert IN OUT [--encoding raw|gzip] [-O KEY=VALUE ...]   read any volume file, write\n"
          "                                OUT.nrrd, OUT.ome.zarr (multiscale pyramid; -O chunk=N,\n"
          "                                -O compression=blosc-lz4|blosc-zstd|zlib|gzip|none) or\n"
-         "                                OUT.osgt/.osgb/.osgx (the volume's default scene)\n"},
-        {"view", "  volren view [INPUT] [render's options] [--screenshot OUT]   interactive window (needs a display)\n"},
-        {"shader", "  volren shader [INPUT] [--set KEY=VALUE ...]   print each volume's composed ray caster\n"},
+         "                                OUT.osgt/.osgb/.osgx (the volume's default scene)\n"
+         "  volren convert IN ... OUT.osgt [--place N:PLACEMENT ...]   several scene, volume and model\n"
+         "                                files combined into one scene file (files referred to by path)\n"},
+        {"view", "  volren view [INPUT ...] [render's options] [--screenshot OUT]   interactive window (needs a display)\n"},
+        {"shader", "  volren shader [INPUT ...] [--set KEY=VALUE ...]   print each volume's composed ray caster\n"},
         {"bench",
-         "  volren bench [INPUT ...] [--size WxH[,WxH...]] [--frames N] [--out DIR] [--configs 'A;B'] [--vtk] [--tf FILE]\n"
+         "  volren bench [DATASET ...] [--size WxH[,WxH...]] [--frames N] [--out DIR] [--configs 'A;B'] [--vtk] [--tf FILE]\n"
          "                [--tolerance T] [--normals central|exact] [--check-front]   speed against accuracy: table, CSV,\n"
-         "                JSON, plot; --check-front fails when a row beats the default on both axes\n"},
+         "                JSON, plot; --check-front fails when a row beats the default on both axes;\n"
+         "                DATASET: an input, or inputs joined by '+' (ct.nii.gz+tool.obj) measured as one scene\n"},
         {"permutations",
          "  volren permutations [--list] [--compile | --render] [--pairwise] [--max-instances N]\n"
          "                [--max-lights N] [--shard I/N] [--first I] [--count N] [--stats FILE.json]\n"

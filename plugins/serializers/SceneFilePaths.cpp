@@ -1,6 +1,6 @@
 #include "SceneFilePaths.h"
 
-#include <volume_model/ReadVolume.h>
+#include <volume_model/DataSearchPath.h>
 
 #include <osgDB/FileNameUtils>
 #include <osgDB/FileUtils>
@@ -13,6 +13,10 @@ namespace volren::serializers {
 namespace fs = std::filesystem;
 
 namespace {
+
+// Stock OSG tools load this plugin when a scene names a volren class: from then on volren's data
+// folders follow $OSG_FILE_PATH on their data path too (for the models a scene names as well).
+[[maybe_unused]] const bool dataPathRegistered = (registerDataPath(), true);
 
 /// Absolute form of `path` with symbolic links resolved where the path exists.
 fs::path normalised(const std::string& path)
@@ -50,15 +54,7 @@ std::string resolveFromScene(const std::string& path, const osgDB::Options* opti
         if (osgDB::isAbsolutePath(path)) return path;
         return normalised(osgDB::concatPaths(sceneFolder(options), path)).string();
     }
-    if (osgDB::isAbsolutePath(path)) return osgDB::fileExists(path) ? path : std::string();
-    // Next to the scene first (findDataFile may prefer a same-named file in the working directory).
-    const std::string beside = osgDB::concatPaths(sceneFolder(options), path);
-    if (osgDB::fileExists(beside)) return normalised(beside).string();
-    std::string found = osgDB::findDataFile(path, options);
-    if (found.empty()) {  // volren's own data (the default scene's head)
-        const std::string shared = osgDB::concatPaths(osgDB::concatPaths(shareDirectory(), "data"), path);
-        if (osgDB::fileExists(shared)) found = shared;
-    }
+    const std::string found = findDataFileFrom(path, sceneFolder(options));
     return found.empty() ? found : normalised(found).string();
 }
 

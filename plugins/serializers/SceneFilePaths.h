@@ -17,8 +17,8 @@ std::string sceneFolder(const osgDB::Options* options);
 std::string pathForScene(const std::string& file, const osgDB::Options* options);
 
 /// The file that `path` (as written in a scene) names: absolute paths as they are, relative ones
-/// against the scene folder first, then OSG's data file path list, then volren's data folder
-/// (share/volren/data); "" when there is none.
+/// against the scene folder first, then OSG's data file path list ($OSG_FILE_PATH, then
+/// volren's data folders: findDataFileFrom); "" when there is none.
 /// Patterns (`slices/s*.tif`) are not looked up, only made absolute against the scene folder.
 std::string resolveFromScene(const std::string& path, const osgDB::Options* options);
 

@@ -4,6 +4,7 @@
 #include "StreamFields.h"
 #include "StreamSerializer.h"
 
+#include <volume_model/DataSearchPath.h>
 #include <volume_model/ReadVolume.h>
 #include <volume_model/Volume.h>
 
@@ -194,8 +195,8 @@ bool readSourceFile(osgDB::InputStream& is, Volume& volume)
     const std::string field = "volren::Volume SourceFile";
     if (found.empty()) {
         const std::string folder = sceneFolder(is.getOptions());
-        return fail(is, field + ": volume file '" + path + "' not found" +
-                            (folder.empty() ? std::string() : " (looked in '" + folder + "', the scene file's folder)")),
+        return fail(is, field + ": volume file '" + path + "' not found (looked in " + volren::searchedFolders(folder) +
+                            "; set OSG_FILE_PATH to the folder holding it)"),
                false;
     }
     try {

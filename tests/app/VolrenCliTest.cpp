@@ -1,4 +1,5 @@
 // The `volren` program's contract: commands, outputs, statistics and errors with exit codes.
+#include "CliHarness.h"
 #include "TestData.h"
 
 #include <volume_model/ReadVolume.h>
@@ -18,56 +19,6 @@
 
 namespace volren::test {
 namespace {
-
-struct CliRun
-{
-    int exitCode = -1;
-    std::string output;  // stdout and stderr
-};
-
-CliRun volren(const std::string& args, const std::string& workingDirectory = ".", const std::string& env = "")
-{
-    const std::string command = "cd '" + workingDirectory + "' && " + env + "'" + std::string(VOLREN_BINARY_DIR) +
-                                "/bin/volren' " + args + " 2>&1";
-    CliRun run;
-    FILE* pipe = popen(command.c_str(), "r");
-    char buf[4096];
-    std::size_t n;
-    while ((n = fread(buf, 1, sizeof(buf), pipe)) > 0) run.output.append(buf, n);
-    const int status = pclose(pipe);
-    run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return run;
-}
-
-struct Image
-{
-    int width = 0, height = 0, channels = 0;
-    std::vector<float> pixels;  // top row first
-    float at(int x, int y, int c) const { return pixels[(std::size_t(y) * width + x) * channels + c]; }
-};
-
-Image readImage(const std::string& path)
-{
-    Image img;
-    auto in = OIIO::ImageInput::open(path);
-    if (!in) return img;
-    const OIIO::ImageSpec& spec = in->spec();
-    img.width = spec.width;
-    img.height = spec.height;
-    img.channels = spec.nchannels;
-    img.pixels.resize(std::size_t(img.width) * img.height * img.channels);
-    in->read_image(0, 0, 0, img.channels, OIIO::TypeDesc::FLOAT, img.pixels.data());
-    return img;
-}
-
-/// Pixels of `img` whose alpha exceeds `alpha`.
-float coveredPixels(const Image& img, float alpha = 0.05f)
-{
-    float covered = 0.0f;
-    for (int y = 0; y < img.height; ++y)
-        for (int x = 0; x < img.width; ++x) covered += img.at(x, y, 3) > alpha;
-    return covered;
-}
 
 /// Expects `converted` to hold `original`'s voxels: dims, spacing and bytes.
 void expectSameVoxels(const Volume& converted, const Volume& original)
@@ -178,6 +129,36 @@ TEST(VolrenCli, ParaViewPresetIsFittedToTheDataRangeUnlessKeptAsIs)
     run = volren("render '" + volume + "' -o '" + dir + "/x.png'" + " --tf '" + dir + "/p.json#nope'");
     EXPECT_EQ(run.exitCode, 1);
     EXPECT_NE(run.output.find(dir + "/p.json: no preset named 'nope' (presets: 'red-blue')"), std::string::npos) << run.output;
+}
+
+TEST(VolrenCli, SlicerVolumePropertyAndImageJLutAreTransferFunctions)
+{
+    VOLREN_REQUIRE_SHARED_DATA();
+    const std::string dir = tempDirectory();
+    const std::string volume = sharedData("mri/ch2.nii.gz");  // values 0 .. 254
+    const std::string common = " --size 32x32 --ortho 400 --set jitter=off --set lighting=off";
+    // Slicer: opacity 0 at 0, 1 from 1 on (data values, used as they are); blue everywhere.
+    std::ofstream(dir + "/blue.vp") << "1\n0\n0.7\n0.2\n0.2\n10\n4 0 0 1 1\n4 0 1 255 1\n8 0 0 0 1 1 0 0 1\n";
+    CliRun run = volren("render '" + volume + "' -o '" + dir + "/vp.png' --tf '" + dir + "/blue.vp'" + common);
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    Image img = readImage(dir + "/vp.png");
+    EXPECT_GT(img.at(16, 16, 2), 0.95f);
+    EXPECT_LT(img.at(16, 16, 0) + img.at(16, 16, 1), 0.02f);
+    // ImageJ's raw 768-byte LUT: a red ramp (opacity rises with the entry), stretched over 0 .. 254.
+    {
+        std::ofstream lut(dir + "/red.lut", std::ios::binary);
+        for (int c = 0; c < 3; ++c)
+            for (int i = 0; i < 256; ++i) lut.put(char(c == 0 ? i : 0));
+    }
+    run = volren("render '" + volume + "' -o '" + dir + "/lut.png' --tf '" + dir + "/red.lut'" + common);
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    img = readImage(dir + "/lut.png");
+    EXPECT_GT(img.at(16, 16, 0), 0.3f);
+    EXPECT_LT(img.at(16, 16, 1) + img.at(16, 16, 2), 0.02f);
+    std::ofstream(dir + "/short.lut") << "1 2 3\n";
+    run = volren("render '" + volume + "' -o '" + dir + "/x.png' --tf '" + dir + "/short.lut'");
+    EXPECT_EQ(run.exitCode, 1);
+    EXPECT_NE(run.output.find(dir + "/short.lut"), std::string::npos) << run.output;
 }
 
 TEST(VolrenCli, RenderHonoursSizeFramesStatsAndTransferFunction)

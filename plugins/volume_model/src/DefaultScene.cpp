@@ -2,7 +2,6 @@
 #include <volume_model/DefaultScene.h>
 #include <volume_model/ReadVolume.h>
 
-#include <osg/LightSource>
 #include <osg/NodeVisitor>
 #include <osg/Notify>
 #include <osgDB/ObjectWrapper>
@@ -24,23 +23,31 @@ osg::ref_ptr<osg::Group> makeSceneRoot()
     return new osg::Group;
 }
 
-osg::ref_ptr<osg::Group> makeDefaultScene(Volume* volume)
+osg::ref_ptr<osg::LightSource> makeHeadlight()
 {
-    osg::ref_ptr<osg::Group> root = makeSceneRoot();
-    root->setName("volren default scene");
-
     osg::ref_ptr<osg::LightSource> headlight = new osg::LightSource;
     headlight->setName("headlight");
     headlight->setReferenceFrame(osg::LightSource::ABSOLUTE_RF);  // eye coordinates: moves with the camera
     headlight->getLight()->setLightNum(0);
     headlight->getLight()->setPosition(osg::Vec4(0.0f, 0.0f, 1.0f, 0.0f));  // directional, along the view
-    root->addChild(headlight);
+    return headlight;
+}
 
+osg::ref_ptr<VolumeNode> makeDefaultVolumeNode(Volume* volume)
+{
     osg::ref_ptr<VolumeNode> node = new VolumeNode;
     node->setName(volume->sourceFile.empty() ? std::string("volume") : volume->sourceFile);
     node->setVolume(volume);
     node->setTransferFunction(makeTransferFunctionFromHistogram(*volume));
-    root->addChild(node);
+    return node;
+}
+
+osg::ref_ptr<osg::Group> makeDefaultScene(Volume* volume)
+{
+    osg::ref_ptr<osg::Group> root = makeSceneRoot();
+    root->setName("volren default scene");
+    root->addChild(makeHeadlight());
+    root->addChild(makeDefaultVolumeNode(volume));
     return root;
 }
 

@@ -1,4 +1,5 @@
 #include <volume_model/ParaViewPreset.h>
+#include "PiecewiseLinear.h"
 
 #include <nlohmann/json.hpp>
 
@@ -30,18 +31,6 @@ std::vector<double> pointList(const Json& preset, const char* key, std::size_t s
     }
     return numbers;
 }
-
-/// Piecewise-linear function through (x, y) pairs, constant beyond the ends.
-double linear(const std::map<double, double>& f, double x)
-{
-    auto upper = f.lower_bound(x);
-    if (upper == f.begin()) return upper->second;
-    if (upper == f.end()) return f.rbegin()->second;
-    auto lower = std::prev(upper);
-    const double t = (x - lower->first) / (upper->first - lower->first);
-    return lower->second + t * (upper->second - lower->second);
-}
-
 }  // namespace
 
 osg::ref_ptr<TransferFunction> readParaViewPreset(const std::string& path, const std::string& name)
@@ -110,8 +99,8 @@ osg::ref_ptr<TransferFunction> readParaViewPreset(const std::string& path, const
     for (const auto& ch : channel)
         for (const auto& point : ch) {
             const double x = point.first;
-            tf->setPoint(x, osg::Vec4(float(linear(channel[0], x)), float(linear(channel[1], x)),
-                                      float(linear(channel[2], x)), float(linear(channel[3], x))));
+            tf->setPoint(x, osg::Vec4(float(piecewiseLinear(channel[0], x)), float(piecewiseLinear(channel[1], x)),
+                                      float(piecewiseLinear(channel[2], x)), float(piecewiseLinear(channel[3], x))));
         }
     return tf;
 }

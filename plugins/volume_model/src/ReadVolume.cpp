@@ -1,3 +1,4 @@
+#include <volume_model/DataSearchPath.h>
 #include <volume_model/ReadVolume.h>
 
 #include <osgDB/FileNameUtils>
@@ -54,6 +55,7 @@ void registerPluginPath()
         auto& paths = osgDB::Registry::instance()->getLibraryFilePathList();
         if (std::find(paths.begin(), paths.end(), dir) == paths.end()) paths.push_front(dir);
     });
+    registerDataPath();
 }
 
 std::string shareDirectory()

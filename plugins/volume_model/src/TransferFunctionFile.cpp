@@ -1,7 +1,10 @@
+#include <volume_model/ImageJLut.h>
 #include <volume_model/ParaViewPreset.h>
 #include <volume_model/ParseNumber.h>
+#include <volume_model/SlicerVolumeProperty.h>
 #include <volume_model/TransferFunctionFile.h>
 
+#include <osg/Notify>
 #include <osgDB/FileNameUtils>
 
 #include <cerrno>
@@ -34,11 +37,28 @@ bool isParaViewPreset(const std::string& path)
     return osgDB::getLowerCaseFileExtension(path.substr(0, path.rfind('#'))) == "json";
 }
 
+bool transferFunctionFitsAnyRange(const std::string& path)
+{
+    return isParaViewPreset(path) || osgDB::getLowerCaseFileExtension(path) == "lut";
+}
+
 osg::ref_ptr<TransferFunction> readTransferFunctionFile(const std::string& path)
 {
-    if (!isParaViewPreset(path)) return readTfFile(path);
-    const std::size_t hash = path.rfind('#');
-    return readParaViewPreset(path.substr(0, hash), hash == std::string::npos ? std::string() : path.substr(hash + 1));
+    if (isParaViewPreset(path)) {
+        const std::size_t hash = path.rfind('#');
+        return readParaViewPreset(path.substr(0, hash), hash == std::string::npos ? std::string() : path.substr(hash + 1));
+    }
+    const std::string extension = osgDB::getLowerCaseFileExtension(path);
+    if (extension == "lut") return readImageJLut(path);
+    if (extension != "vp") return readTfFile(path);
+    const SlicerVolumeProperty vp = readSlicerVolumeProperty(path);
+    if (vp.hasGradientOpacity())
+        OSG_NOTICE << path << ": the gradient opacity is ignored (volren classifies by value only)" << std::endl;
+    OSG_INFO << path << ": Slicer's interpolation, shading and lighting lines are ignored (volren's render settings apply)"
+             << std::endl;
+    osg::ref_ptr<TransferFunction> tf = vp.transferFunction();
+    tf->setName(path);
+    return tf;
 }
 
 osg::ref_ptr<TransferFunction> readTfFile(const std::string& path)

@@ -3,6 +3,7 @@
 #include <volume_model/VolumeNode.h>
 
 #include <osg/Group>
+#include <osg/LightSource>
 
 #include <vector>
 
@@ -17,6 +18,10 @@ osg::ref_ptr<osg::Group> makeSceneRoot();
 /// with a transfer function from its histogram, and one headlight (an osg::LightSource fixed
 /// to the camera). Any OSG viewer renders it.
 osg::ref_ptr<osg::Group> makeDefaultScene(Volume* volume);
+/// The default scene's light: directional along the view, fixed to the camera (light 0).
+osg::ref_ptr<osg::LightSource> makeHeadlight();
+/// A VolumeNode showing `volume` (named by its file) with a transfer function from its histogram.
+osg::ref_ptr<VolumeNode> makeDefaultVolumeNode(Volume* volume);
 
 /// First VolumeNode found below `root` (depth first), or null.
 VolumeNode* findFirstVolumeNode(osg::Node* root);

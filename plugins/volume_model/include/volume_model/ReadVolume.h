@@ -19,7 +19,8 @@ std::string volumeFileExtension(const std::string& path);
 bool isVolumeFile(const std::string& path);
 
 /// Adds the folder holding the volren osgDB plugins (next to this library) to OSG's
-/// library path, once; called by readVolumeFile and by programs before reading scenes.
+/// library path, once, and volren's data folders to its data path (registerDataPath);
+/// called by readVolumeFile and by programs before reading scenes.
 void registerPluginPath();
 
 /// Folder of shared volren resources (shaders/, data/): $VOLREN_SHARE_DIR, else the
