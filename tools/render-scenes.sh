@@ -8,19 +8,9 @@ size=${1:-480x360}
 volren="$here/build/bin/volren"
 [ -x "$volren" ] || { echo "render-scenes: build first (tools/setup.sh)" >&2; exit 1; }
 mkdir -p "$here/docs/images"
-# A closer view where the default framing (the scene's bounding sphere) leaves much empty space.
-view() {
-  case "$1" in
-    ct-instrument) echo "--eye 200,330,130 --center 0,0,0" ;;
-    two-volumes) echo "--eye 420,800,380 --center 0,0,-10" ;;
-    isosurface-mesh) echo "--eye 250,420,190 --center 0,0,10" ;;
-    *) echo "" ;;
-  esac
-}
 for scene in "$here"/scenes/*.osgt; do
   name=$(basename "$scene" .osgt)
-  # shellcheck disable=SC2046
-  "$volren" render "$scene" -o "$here/docs/images/scene-$name.png" --size "$size" --background 0.08,0.08,0.1 $(view "$name")
+  "$volren" render "$scene" -o "$here/docs/images/scene-$name.png" --size "$size" --background 0.08,0.08,0.1
 done
 for scene in "$here"/docs/scenes/*.osgt; do
   name=$(basename "$scene" .osgt)

@@ -55,12 +55,12 @@ int renderCommand(const std::vector<std::string>& args, bool defaultRun)
     for (int i = 0; i < options.frames; ++i) frames.push_back(renderer.renderFrame());
     converge();
     const double streamMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - streamStart).count();
-    std::string written;
+    WrittenFrames written;
     if (isSequence(options)) {
         written = renderSequence(renderer, *scene, options, converge, frames);
     } else {
         writeImage(*renderer.image(), options.output);
-        written = osgDB::getRealPath(options.output);
+        written.path = osgDB::getRealPath(options.output);
     }
 
     if (!options.statsFile.empty()) {
@@ -115,7 +115,8 @@ int renderCommand(const std::vector<std::string>& args, bool defaultRun)
         if (!out) throw std::runtime_error(options.statsFile + ": cannot write statistics");
     }
 
-    std::cout << "volren: wrote " << written << " (" << options.width << "x" << options.height << ", " << input << ")"
+    std::cout << "volren: wrote " << written.path << " (" << options.width << "x" << options.height << ", "
+              << (isSequence(options) ? std::to_string(written.frames) + " frames, " : std::string()) << input << ")"
               << std::endl;
     return 0;
 }

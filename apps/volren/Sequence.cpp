@@ -15,7 +15,7 @@ bool isSequence(const RenderOptions& options)
     return options.turntable > 0 || options.everyTime;
 }
 
-std::string renderSequence(OffscreenRenderer& renderer, osg::Node& scene, const RenderOptions& options,
+WrittenFrames renderSequence(OffscreenRenderer& renderer, osg::Node& scene, const RenderOptions& options,
                            const std::function<void()>& converge, std::vector<FrameTiming>& timings)
 {
     const double aspect = double(options.width) / options.height;
@@ -42,10 +42,11 @@ std::string renderSequence(OffscreenRenderer& renderer, osg::Node& scene, const 
     }
     if (gif) {
         writeAnimatedGif(images, options.output, options.turntable > 0 ? 25 : 10);
-        return osgDB::getRealPath(options.output) + " (" + std::to_string(count) + " frames)";
+        return {osgDB::getRealPath(options.output), count};
     }
-    return osgDB::getRealPath(numberedPath(options.output, 1)) + " ... " +
-           osgDB::getSimpleFileName(numberedPath(options.output, count)) + " (" + std::to_string(count) + " frames)";
+    return {osgDB::getRealPath(numberedPath(options.output, 1)) + " ... " +
+                osgDB::getSimpleFileName(numberedPath(options.output, count)),
+            count};
 }
 
 }  // namespace volren::app

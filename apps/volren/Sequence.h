@@ -9,6 +9,13 @@
 
 namespace volren::app {
 
+/// What a render wrote: the file (or "first ... last"), and how many frames.
+struct WrittenFrames
+{
+    std::string path;
+    int frames = 1;
+};
+
 /// Whether the options ask for a sequence of frames (--turntable N, --time all).
 bool isSequence(const RenderOptions& options);
 
@@ -17,7 +24,7 @@ bool isSequence(const RenderOptions& options);
 /// points spread over its frames: frame k shows time point k * T / N). Each frame is rendered,
 /// then `converge` lets streamed bricks arrive; frames are written as OUT_0001.png ... or, for
 /// OUT.gif, one animated GIF. Appends each frame's timing to `timings`; returns what was written.
-std::string renderSequence(OffscreenRenderer& renderer, osg::Node& scene, const RenderOptions& options,
+WrittenFrames renderSequence(OffscreenRenderer& renderer, osg::Node& scene, const RenderOptions& options,
                            const std::function<void()>& converge, std::vector<FrameTiming>& timings);
 
 }  // namespace volren::app

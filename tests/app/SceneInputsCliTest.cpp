@@ -324,7 +324,7 @@ TEST(TimeSeries, RenderShowsOneTimePointOrEveryOneInTurn)
     const std::string view = " --size 64x64" + topView.substr(topView.find(" --eye")) + " --tf-keep-range";
     CliRun run = volren("render moving.mha -o all.exr --time all" + view, dir);
     ASSERT_EQ(run.exitCode, 0) << run.output;
-    EXPECT_NE(run.output.find("(3 frames)"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("(64x64, 3 frames, moving.mha)"), std::string::npos) << run.output;
     EXPECT_FALSE(fs::exists(dir + "/all_0004.exr"));
     // Top view, 100 units over 64 px: the ball moves 8 units = 5.12 px right per time point.
     std::vector<double> centres;
