@@ -39,7 +39,10 @@ const std::vector<std::pair<std::string, double RenderSettings::*>>& exactNumber
         {"shininess", &RenderSettings::shininess},
         {"roughness", &RenderSettings::roughness},
         {"threshold", &RenderSettings::threshold},
-        {"adaptiveTolerance", &RenderSettings::adaptiveTolerance}};
+        {"adaptiveTolerance", &RenderSettings::adaptiveTolerance},
+        {"shadowStepFactor", &RenderSettings::shadowStepFactor},
+        {"shadowCutoff", &RenderSettings::shadowCutoff},
+        {"anisotropy", &RenderSettings::anisotropy}};
     return fields;
 }
 

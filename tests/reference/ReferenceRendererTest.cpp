@@ -13,6 +13,8 @@
 #include <osgDB/ReadFile>
 
 #include <cmath>
+#include <cstdint>
+#include <stdexcept>
 
 namespace volren::test {
 namespace {
@@ -204,6 +206,230 @@ TEST(ReferenceRenderer, NanVoxelsAreEmptyAndOpaqueOpacityStopsTheRay)
     const ReferenceImage img = renderReference(ReferenceScene::collect(*withNode(opaque)), orthoFromPlusZ(4, 2.0));
     EXPECT_EQ(img.at(2, 2, 3), 1.0);
     EXPECT_EQ(img.at(2, 2, 2), 0.75);
+}
+
+// Exact single-scattering shadows (Shadowing ray, ReferenceScene::Shadows::Exact).
+
+/// Orthographic camera looking down -z at the origin, `w` x `h` world units, one pixel per unit.
+ReferenceCamera orthoPixelPerUnit(int w, int h)
+{
+    ReferenceCamera c;
+    c.width = w;
+    c.height = h;
+    c.view = osg::Matrixd::lookAt(osg::Vec3d(0, 0, 100), osg::Vec3d(0, 0, 0), osg::Vec3d(0, 1, 0));
+    c.projection = osg::Matrixd::ortho(-w / 2.0, w / 2.0, -h / 2.0, h / 2.0, 1, 200);
+    return c;
+}
+
+/// Lit by Lambert only (no ambient), shadows as `shadowing` says.
+void litByLambert(VolumeNode& node, const char* shadowing)
+{
+    std::string error;
+    ASSERT_TRUE(node.settings.set("ambient", "0", error)) << error;
+    node.settings.functions["Shading"] = "lighting";
+    node.settings.functions["Illumination"] = "lambert";
+    node.settings.functions["Shadowing"] = shadowing;
+}
+
+osg::ref_ptr<osg::LightSource> lightAt(const osg::Vec4& position)
+{
+    osg::ref_ptr<osg::LightSource> light = new osg::LightSource;
+    light->getLight()->setPosition(position);
+    light->getLight()->setDiffuse(osg::Vec4(1, 1, 1, 1));
+    return light;
+}
+
+/// 32 x 4 x 4 voxels along x: a lit block (voxels 0-7, values falling 200..130 along x, so its
+/// normal is +x), a gap of zeros, a slab of 255 (voxels 16-23) when `slab`, zeros to the end.
+/// The TF's opacity rises linearly from 0 at 0 to `a` at 255, in one colour.
+osg::ref_ptr<VolumeNode> blockAndSlab(bool slab, double a)
+{
+    osg::ref_ptr<Volume> v = new Volume;
+    v->allocate(VoxelType::UInt8, {32, 4, 4});
+    for (std::size_t i = 0; i < v->voxelCount(); ++i) {
+        const std::size_t x = i % 32;
+        v->data()[i] = x < 8 ? std::uint8_t(200 - 10 * x) : (slab && x >= 16 && x < 24) ? 255 : 0;
+    }
+    v->dirty();
+    auto tf = transferFunction(
+        {{0.0, osg::Vec4(0.8f, 0.6f, 0.4f, 0.0f)}, {255.0, osg::Vec4(0.8f, 0.6f, 0.4f, float(a))}}, 0.0, 255.0);
+    return makeVolumeNode(v.get(), tf.get());
+}
+
+TEST(ReferenceShadows, SlabBetweenLightAndBlockScalesItsLightByTheSlabsTransmittance)
+{
+    // A directional light exactly along +x: every shadow ray from the block (x < -8) crosses the
+    // whole slab, so with the slab every lit sample's light is exp(-tau) times that without it
+    // (the block shadowing itself alike), and so is each block pixel (no ambient). tau: 7 voxels
+    // of opacity a (sigma = -ln(1 - a)) and two ramps of one voxel from 0 to a, each
+    // integral_0^1 -ln(1 - a t) dt = (a + (1 - a) ln(1 - a)) / a.
+    const double a = 0.3, fa = double(float(a));
+    const double tau = 7.0 * -std::log1p(-fa) + 2.0 * (fa + (1.0 - fa) * std::log1p(-fa)) / fa;
+    ReferenceOptions options;
+    options.tolerance = 1e-6;
+    auto render = [&](bool slab, const char* shadowing, ClipNode* clip = nullptr) {
+        auto node = blockAndSlab(slab, a);
+        litByLambert(*node, shadowing);
+        osg::ref_ptr<osg::Group> root = withNode(node);
+        root->addChild(lightAt(osg::Vec4(1, 0, 0, 0)).get());
+        if (clip) root->addChild(clip);
+        return renderReference(ReferenceScene::collect(*root), orthoPixelPerUnit(32, 4), options);
+    };
+    const ReferenceImage with = render(true, "ray"), without = render(false, "ray"), unshadowed = render(true, "null");
+    EXPECT_EQ(with.unconverged, 0u);
+    EXPECT_EQ(without.unconverged, 0u);
+    for (int x = 0; x < 12; ++x) {  // pixel x sees voxel column x: the block and its edge
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(with.at(x, 2, c), std::exp(-tau) * without.at(x, 2, c), 1e-6) << "pixel " << x << ", " << c;
+        EXPECT_EQ(with.at(x, 2, 3), without.at(x, 2, 3)) << "shadows change no opacity";
+    }
+    EXPECT_GT(without.at(3, 2, 0), 0.05) << "the block is lit";
+    EXPECT_LT(without.at(3, 2, 0), unshadowed.at(3, 2, 0) * 0.9) << "and shadows itself";
+
+    // A clip plane keeping x <= -4 removes the slab for the shadow rays too: the block is lit as
+    // without it, exactly (a clipped point and an empty one add nothing alike).
+    osg::ref_ptr<ClipPlaneNode> plane = new ClipPlaneNode;
+    plane->plane.set(-1, 0, 0, -4);
+    const ReferenceImage clipped = render(true, "ray", plane.get());
+    for (int x = 0; x < 12; ++x)
+        for (int c = 0; c < 4; ++c) EXPECT_NEAR(clipped.at(x, 2, c), without.at(x, 2, c), 1e-12) << x << " " << c;
+}
+
+TEST(ReferenceShadows, PointLightInsideAHomogeneousMediumIsDimmedByExpOfSigmaTimesDistance)
+{
+    // A homogeneous medium (zero gradient: the normal is the view direction +z) lit by a point
+    // light at (0, 0, zl) inside it: the sample at z on the ray at distance rho from the light's
+    // axis gets the light attenuated by exp(-sigma r) over r = |sample - light| (up to the
+    // light, not to the box), times Lambert's (zl - z) / r. The pixel is
+    // c integral_{-8}^{zl} sigma exp(-sigma (8 - z)) (zl - z)/r exp(-sigma r) dz, found here by
+    // Simpson's rule on 20000 intervals. Anisotropic spacing: sigma = -ln(1 - a) / smallest spacing.
+    const double a = 0.1, fa = double(float(a)), zl = 2.0;
+    const osg::Vec4 colour(0.9f, 0.5f, 0.3f, float(a));
+    for (const osg::Vec3d spacing : {osg::Vec3d(1, 1, 1), osg::Vec3d(0.5, 1, 2)}) {
+        const osg::Vec3i dims(int(16 / spacing.x()), int(16 / spacing.y()), int(16 / spacing.z()));
+        auto node = makeVolumeNode(constantVolume(VoxelType::UInt8, dims, 50, spacing).get(),
+                                   constantTransferFunction(colour).get());
+        litByLambert(*node, "ray");
+        osg::ref_ptr<osg::Group> root = withNode(node);
+        root->addChild(lightAt(osg::Vec4(0, 0, zl, 1)).get());
+        ReferenceOptions options;
+        options.tolerance = 1e-7;
+        const ReferenceImage img = renderReference(ReferenceScene::collect(*root), orthoFromPlusZ(4, 8.0), options);
+        EXPECT_EQ(img.unconverged, 0u);
+        const double sigma = -std::log1p(-fa) / std::min({spacing.x(), spacing.y(), spacing.z()});
+        for (int y = 0; y < 4; ++y)
+            for (int x = 0; x < 4; ++x) {
+                const double px = 2.0 * x - 3.0, py = 2.0 * y - 3.0, rho2 = px * px + py * py;
+                auto f = [&](double z) {
+                    const double r = std::sqrt(rho2 + (zl - z) * (zl - z));
+                    return sigma * std::exp(-sigma * (8.0 - z)) * (zl - z) / r * std::exp(-sigma * r);
+                };
+                const int n = 20000;
+                const double h = (zl + 8.0) / n;
+                double sum = f(-8.0) + f(zl);
+                for (int k = 1; k < n; ++k) sum += (k % 2 ? 4.0 : 2.0) * f(-8.0 + k * h);
+                const double light = sum * h / 3.0;
+                for (int c = 0; c < 3; ++c)
+                    EXPECT_NEAR(img.at(x, y, c), double(colour[c]) * light, 1e-6) << x << "," << y << " channel " << c;
+                EXPECT_NEAR(img.at(x, y, 3), -std::expm1(-16.0 * sigma), 1e-12);
+            }
+    }
+}
+
+TEST(ReferenceShadows, NoNanOrInfAlongAxesDiagonalsFacesOrWithTheLightInside)
+{
+    // Noise with NaN voxels and opaque values, a clip plane, zero-gradient regions, lights along
+    // +x, along the diagonal, from -y, and two point lights inside (one on a voxel centre), seen
+    // by pixels whose rays run exactly along the box's x faces (17 pixels over 17 units: centres
+    // at x = -8 and 8) and by a perspective camera inside the volume.
+    osg::ref_ptr<Volume> v = new Volume;
+    v->allocate(VoxelType::Float32, {16, 16, 16});
+    auto* values = reinterpret_cast<float*>(v->data());
+    std::uint32_t seed = 7;
+    for (std::size_t i = 0; i < v->voxelCount(); ++i) {
+        seed = seed * 1664525u + 1013904223u;
+        const std::uint32_t r = seed >> 24;
+        values[i] = r < 8 ? std::nanf("") : (i / 256) < 4 ? 100.0f : float(r);  // z < 4: constant
+    }
+    v->dirty();
+    auto tf = transferFunction({{0.0, osg::Vec4(1, 1, 1, 0)}, {100.0, osg::Vec4(0.5f, 0.7f, 0.9f, 0.2f)},
+                                {240.0, osg::Vec4(1, 0.5f, 0.2f, 0.6f)}, {250.0, osg::Vec4(1, 1, 1, 1)}},
+                               0.0, 255.0);
+    auto node = makeVolumeNode(v.get(), tf.get());
+    node->settings.functions["Shading"] = "lighting";
+    node->settings.functions["Illumination"] = "blinn_phong";
+    node->settings.functions["Shadowing"] = "ray";
+    osg::ref_ptr<osg::Group> root = withNode(node);
+    for (const osg::Vec4& p : {osg::Vec4(1, 0, 0, 0), osg::Vec4(1, 1, 1, 0), osg::Vec4(0, -1, 0, 0),
+                               osg::Vec4(0.5f, 0.5f, 0.5f, 1), osg::Vec4(-3, 2, 7.9f, 1)})
+        root->addChild(lightAt(p).get());
+    osg::ref_ptr<ClipPlaneNode> plane = new ClipPlaneNode;
+    plane->plane.set(osg::Vec3d(1, 1, 1), osg::Vec3d(2, 0, 0));  // keeps x + y + z >= 2
+    root->addChild(plane.get());
+
+    ReferenceCamera inside;
+    inside.width = inside.height = 9;
+    inside.view = osg::Matrixd::lookAt(osg::Vec3d(0, 0, 0), osg::Vec3d(1, 1, 1), osg::Vec3d(0, 0, 1));
+    inside.projection = osg::Matrixd::perspective(60, 1, 0.5, 100);
+    ReferenceOptions options;
+    options.tolerance = 1e-2;
+    options.finestStep = 1.0 / 64.0;  // noise: bounded work, convergence not the point here
+    for (const ReferenceCamera& camera : {orthoPixelPerUnit(17, 17), inside}) {
+        const ReferenceScene scene = ReferenceScene::collect(*root);
+        const ReferenceImage img = renderReference(scene, camera, options);
+        double sum = 0.0;
+        for (double value : img.rgba) {
+            ASSERT_TRUE(std::isfinite(value));
+            EXPECT_GE(value, 0.0);
+            sum += value;
+        }
+        node->settings.functions["Shadowing"] = "null";
+        const ReferenceImage unshadowed = renderReference(ReferenceScene::collect(*root), camera, options);
+        node->settings.functions["Shadowing"] = "ray";
+        double unshadowedSum = 0.0;
+        for (double value : unshadowed.rgba) unshadowedSum += value;
+        EXPECT_LT(sum, unshadowedSum) << "shadows darken";
+        EXPECT_GT(sum, 0.0);
+    }
+}
+
+TEST(ReferenceShadows, NullShadowingIsTheUnshadowedImageBitForBitAndUnknownOnesAreRefused)
+{
+    // Shadowing unset, "null" or ReferenceScene::Shadows::None: one and the same image, bit for
+    // bit (the unshadowed integral this reference computed before shadows existed).
+    auto node = blockAndSlab(true, 0.3);
+    litByLambert(*node, "null");
+    node->settings.functions.erase("Shadowing");
+    osg::ref_ptr<osg::Group> root = withNode(node);
+    root->addChild(lightAt(osg::Vec4(1, 0.3f, 0.5f, 0)).get());
+    root->addChild(lightAt(osg::Vec4(-4, 1, 3, 1)).get());
+    const ReferenceCamera camera = orthoPixelPerUnit(32, 4);
+    const ReferenceImage unset = renderReference(ReferenceScene::collect(*root), camera);
+    node->settings.functions["Shadowing"] = "null";
+    EXPECT_EQ(renderReference(ReferenceScene::collect(*root), camera).rgba, unset.rgba);
+    node->settings.functions["Shadowing"] = "ray";
+    ReferenceScene forcedNone = ReferenceScene::collect(*root);
+    forcedNone.volumes[0].shadows = ReferenceScene::Shadows::None;
+    EXPECT_EQ(renderReference(forcedNone, camera).rgba, unset.rgba);
+    const ReferenceImage ray = renderReference(ReferenceScene::collect(*root), camera);
+    EXPECT_NE(ray.rgba, unset.rgba);
+
+    // A Shadowing the reference has no model of is refused by name, unless the scene says which
+    // shadows it approximates (a light volume or cones: the exact ones, as ray).
+    node->settings.functions["Shadowing"] = "lightvolume";
+    try {
+        renderReference(ReferenceScene::collect(*root), camera);
+        ADD_FAILURE() << "an unknown Shadowing was not refused";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("lightvolume"), std::string::npos) << e.what();
+    }
+    ReferenceScene approximating = ReferenceScene::collect(*root);
+    approximating.volumes[0].shadows = ReferenceScene::Shadows::Exact;
+    EXPECT_EQ(renderReference(approximating, camera).rgba, ray.rgba);
+    // Unlit (lighting off), the choice does not matter.
+    ReferenceOptions unlit;
+    unlit.lighting = false;
+    EXPECT_NO_THROW(renderReference(ReferenceScene::collect(*root), camera, unlit));
 }
 
 }  // namespace

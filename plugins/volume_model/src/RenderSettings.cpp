@@ -71,6 +71,8 @@ bool RenderSettings::operator==(const RenderSettings& o) const
            same(shininess, o.shininess) && same(roughness, o.roughness) && same(threshold, o.threshold) &&
            debugView == o.debugView && macrocellSize == o.macrocellSize &&
            same(adaptiveTolerance, o.adaptiveTolerance) && adaptiveSteps == o.adaptiveSteps && lod == o.lod &&
+           same(shadowStepFactor, o.shadowStepFactor) && same(shadowCutoff, o.shadowCutoff) &&
+           same(anisotropy, o.anisotropy) &&
            memoryBudgetMB == o.memoryBudgetMB && brickSize == o.brickSize && lodByDistance == o.lodByDistance && texturePrecision == o.texturePrecision &&
            functions == o.functions && forceNull == o.forceNull;
 }
@@ -93,6 +95,9 @@ std::vector<std::pair<std::string, std::string>> RenderSettings::keys()
         {"macrocellSize", "edge of the empty-space-skipping macrocells in voxels (1-1024)"},
         {"adaptiveTolerance", "adaptive sampling: largest change of the classified RGBA in a homogeneous macrocell (0-1)"},
         {"adaptiveSteps", "adaptive sampling: most march steps one sample stands for in a homogeneous macrocell (1-64)"},
+        {"anisotropy", "Henyey-Greenstein g of illumination=henyey_greenstein (-0.99..0.99; 0 isotropic, > 0 forward)"},
+        {"shadowStepFactor", "shadow rays (shadowing=ray): their step as a factor of the view ray's (> 0)"},
+        {"shadowCutoff", "shadow rays stop once the light's transmittance falls below this (0 = never; default 1/512)"},
         {"lod", "level of detail: mip level the volume is sampled from, the step growing as 2^lod (0-16)"},
         {"lodByDistance", "level of detail by distance: the level rises where a pixel covers more than a voxel (on/off)"},
         {"memoryBudgetMB", "GPU memory for one volume's voxels in MiB (0 = auto: half of what the GPU reports, else 2048); larger volumes are bricked"},
@@ -126,6 +131,9 @@ std::string RenderSettings::get(const std::string& key) const
     if (k == "macrocellsize") return std::to_string(macrocellSize);
     if (k == "adaptivetolerance") return number(adaptiveTolerance);
     if (k == "adaptivesteps") return std::to_string(adaptiveSteps);
+    if (k == "anisotropy") return number(anisotropy);
+    if (k == "shadowstepfactor") return number(shadowStepFactor);
+    if (k == "shadowcutoff") return number(shadowCutoff);
     if (k == "lod") return std::to_string(lod);
     if (k == "memorybudgetmb") return std::to_string(memoryBudgetMB);
     if (k == "bricksize") return std::to_string(brickSize);
@@ -188,6 +196,9 @@ bool RenderSettings::set(const std::string& key, const std::string& value, std::
         {"roughness", &roughness, 0.0, 1.0, true},
         {"threshold", &threshold, 0.0, 1.0, false},
         {"adaptivetolerance", &adaptiveTolerance, 0.0, 1.0, false},
+        {"shadowstepfactor", &shadowStepFactor, 0.0, 1e3, true},
+        {"anisotropy", &anisotropy, -0.99, 0.99, false},
+        {"shadowcutoff", &shadowCutoff, 0.0, 1.0, false},
     };
     double v = 0.0;
     if (k == "samplerate") {

@@ -3,11 +3,24 @@
 #include <volume_renderer/OffscreenRenderer.h>
 #include <volume_renderer/VolumeScene.h>
 
+#include <map>
 #include <stdexcept>
 
 namespace volren {
 
 namespace {
+
+/// The shadow model each of the renderer's Shadowing implementations approximates; one missing
+/// here is left to renderReference, which refuses it by name. (Later approximations of the same
+/// transmittance, a light volume or cone tracing, map to Exact too.)
+const std::map<std::string, ReferenceScene::Shadows>& shadowModels()
+{
+    static const std::map<std::string, ReferenceScene::Shadows> models = {
+        {"null", ReferenceScene::Shadows::None},
+        {"ray", ReferenceScene::Shadows::Exact},
+    };
+    return models;
+}
 
 /// Rasterises `scene` without its volumes for `camera`; fills the options' geometry depth and
 /// colour when anything was drawn.
@@ -44,12 +57,16 @@ void rasteriseGeometry(VolumeScene& scene, const ReferenceScene& content, const 
 ReferenceScene referenceScene(VolumeScene& scene)
 {
     ReferenceScene content = ReferenceScene::collect(scene);
-    // The policy's choice for each volume: only the number of lights decides its lighting.
+    // The policy's choice for each volume: only the number of lights decides its lighting; its
+    // Shadowing says which shadows are the truth.
     SceneOffer offer;
     offer.lights.resize(content.lights.size());
     for (auto& placed : content.volumes) {
         const auto& node = static_cast<const VolumeNode&>(*placed.node);
         placed.choice = scene.policy().choose(node.settings, offer, scene.pass).composition.choice;
+        if (auto it = placed.choice.find("Shadowing"); it != placed.choice.end())
+            if (auto model = shadowModels().find(it->second); model != shadowModels().end())
+                placed.shadows = model->second;
     }
     return content;
 }

@@ -1,5 +1,6 @@
 // The reference's integrator: per ray, front to back through the union of the media's boxes,
-// media adding along the ray, halving the step until two results agree within the tolerance.
+// media adding along the ray, halving the step until two results agree within the tolerance
+// (the shadow rays of its lit samples converging on their own: Shadows.cpp).
 #include "Integrator.h"
 
 #include <osg/LightSource>
@@ -13,14 +14,15 @@ namespace volren::reference {
 namespace {
 
 /// The medium of `placed`, lit by the scene's first `lightCount` lights (eye-fixed ones placed
-/// by the camera: `eyeToWorld`).
+/// by the camera: `eyeToWorld`), clipped by `clips` (from world coordinates) for its shadows.
 Medium mediumOf(const ReferenceScene& scene, const ReferenceScene::Placed& placed, std::size_t lightCount,
-                const osg::Matrixd& eyeToWorld, const ReferenceOptions& options)
+                const osg::Matrixd& eyeToWorld, const std::vector<Clip>& clips, const ReferenceOptions& options)
 {
     const auto& node = static_cast<const VolumeNode&>(*placed.node);
     Medium m;
     m.volume = node.getVolume();
     m.tf = node.getTransferFunction();
+    m.localToWorld = placed.localToWorld;
     m.worldToLocal = osg::Matrixd::inverse(placed.localToWorld);
     m.size = toGlm(m.volume->worldSize());
     const osg::Vec3i& d = m.volume->dims();
@@ -30,6 +32,15 @@ Medium mediumOf(const ReferenceScene& scene, const ReferenceScene::Placed& place
     m.domainMax = m.tf->domainMax();
     setShading(m, placed, lightCount > 0);
     m.gradientKind = options.gradient;
+    // Shadow rays converge like view rays, to a quarter of the tolerance (a transmittance
+    // scales a light's whole term), through every clip shape (all apply to every volume).
+    m.shadowTolerance = options.tolerance / 4.0;
+    m.shadowFirstStep = options.firstStep;
+    m.shadowFinestStep = options.finestStep;
+    if (m.shadows != ReferenceScene::Shadows::None && lightCount > 0 && m.shading != Shading::None) {
+        for (const Clip& c : clips) m.clips.push_back({c.node, m.localToWorld * c.toShape});
+        m.findEmptyBlocks();
+    }
     for (std::size_t i = 0; i < lightCount; ++i) {
         const auto& source = static_cast<const osg::LightSource&>(*scene.lights[i].node);
         const osg::Matrixd toLocal =
@@ -58,16 +69,17 @@ Integrator::Integrator(const ReferenceScene& scene, const ReferenceCamera& camer
     _unit = std::numeric_limits<double>::infinity();
     const std::size_t lightCount = options.lighting ? std::min<std::size_t>(scene.lights.size(), 8) : 0;
     const osg::Matrixd eyeToWorld = osg::Matrixd::inverse(camera.view);
+    for (const auto& placed : scene.clips)
+        _clips.push_back({static_cast<const ClipNode*>(placed.node.get()), osg::Matrixd::inverse(placed.localToWorld)});
     for (const auto& placed : scene.volumes) {
-        Medium m = mediumOf(scene, placed, lightCount, eyeToWorld, options);
+        Medium m = mediumOf(scene, placed, lightCount, eyeToWorld, _clips, options);
         _unit = std::min(_unit, m.unitLength);
         _media.push_back(m);
     }
-    for (const auto& placed : scene.clips)
-        _clips.push_back({static_cast<const ClipNode*>(placed.node.get()), osg::Matrixd::inverse(placed.localToWorld)});
 }
 
-glm::dvec4 Integrator::integrate(const Ray& ray, double end, bool& converged, double& finest) const
+glm::dvec4 Integrator::integrate(const Ray& ray, double end, bool& converged, bool& shadowsConverged,
+                                 double& finest) const
 {
     double u0 = 1.0, u1 = 0.0;  // the union of the boxes along the ray, as fractions of it
     for (const Medium& m : _media) {
@@ -75,16 +87,19 @@ glm::dvec4 Integrator::integrate(const Ray& ray, double end, bool& converged, do
         if (boxSpan(m, ray, a, b)) u0 = std::min(u0, a), u1 = std::max(u1, b);
     }
     u1 = std::min(u1, end);
-    converged = true;
+    converged = shadowsConverged = true;
     if (!(u1 > u0)) return glm::dvec4(0.0);
     double step = _options.firstStep * _unit;
-    glm::dvec4 coarse = march(ray, u0, u1, step);
+    ShadowTally discarded;
+    glm::dvec4 coarse = march(ray, u0, u1, step, discarded);
     for (;;) {
         step *= 0.5;
-        const glm::dvec4 fine = march(ray, u0, u1, step);
+        ShadowTally tally;  // of the march that may be kept
+        const glm::dvec4 fine = march(ray, u0, u1, step, tally);
         double change = 0.0;
         for (int c = 0; c < 4; ++c) change = std::max(change, std::abs(fine[c] - coarse[c]));
-        finest = std::min(finest, step);
+        finest = std::min({finest, step, tally.finest});
+        shadowsConverged = tally.converged;
         if (change <= _options.tolerance) return fine;
         if (step <= _options.finestStep * _unit) {
             converged = false;
@@ -114,7 +129,7 @@ bool Integrator::boxSpan(const Medium& m, const Ray& ray, double& a, double& b)
     return b > a;
 }
 
-glm::dvec4 Integrator::march(const Ray& ray, double u0, double u1, double step) const
+glm::dvec4 Integrator::march(const Ray& ray, double u0, double u1, double step, ShadowTally& tally) const
 {
     const double start = u0 * ray.length, end = u1 * ray.length;
     const auto count = std::size_t(std::ceil((end - start) / step));
@@ -134,25 +149,23 @@ glm::dvec4 Integrator::march(const Ray& ray, double u0, double u1, double step) 
             const glm::dvec3 local = toGlm(localPoint);
             const glm::dvec3 tc = local / m.size + 0.5;
             if (tc.x < 0 || tc.y < 0 || tc.z < 0 || tc.x > 1 || tc.y > 1 || tc.z > 1) continue;
-            const double v = m.value(tc);
-            if (std::isnan(v)) continue;  // NaN voxels are empty
-            const osg::Vec4 rgba = m.tf->evaluate(std::clamp(v, m.domainMin, m.domainMax));
+            osg::Vec4 rgba;
+            if (!m.classify(tc, rgba)) continue;  // NaN or transparent: empty
             const double alpha = rgba.a();
-            if (alpha <= 0.0) continue;
             glm::dvec3 c(rgba.r(), rgba.g(), rgba.b());
             if (m.shading != Shading::None) {
                 const glm::dvec3 view =
                     -glm::normalize(toGlm(osg::Matrixd::transform3x3(osg::Vec3d(ray.direction.x, ray.direction.y,
                                                                                  ray.direction.z),
                                                                       m.worldToLocal)));
-                c = m.shade(tc, local, view, c, alpha);
+                c = m.shade(tc, local, view, c, alpha, tally);
             }
             if (alpha >= 1.0) {  // infinite extinction: opaque at this point
                 opaque = true;
                 opaqueColour = c;
                 continue;
             }
-            const double sigma = -std::log1p(-alpha) / m.unitLength;
+            const double sigma = m.extinction(alpha);
             extinction += sigma;
             emission += sigma * c;
         }
@@ -172,7 +185,7 @@ glm::dvec4 Integrator::march(const Ray& ray, double u0, double u1, double step) 
 bool Integrator::kept(const glm::dvec3& p) const
 {
     for (const Clip& c : _clips)
-        if (!c.node->keeps(osg::Vec3d(p.x, p.y, p.z) * c.worldToLocal)) return false;
+        if (!c.node->keeps(osg::Vec3d(p.x, p.y, p.z) * c.toShape)) return false;
     return true;
 }
 

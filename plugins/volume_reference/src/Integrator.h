@@ -3,18 +3,9 @@
 // ray through every medium of a scene, with step halving until it converges.
 #include "Medium.h"
 
-#include <volume_model/ClipNode.h>
-
 #include <vector>
 
 namespace volren::reference {
-
-/// A clip shape and the world -> its local transform.
-struct Clip
-{
-    const ClipNode* node;
-    osg::Matrixd worldToLocal;
-};
 
 /// The ray of one pixel in world space, from the near to the far plane.
 struct Ray
@@ -30,20 +21,22 @@ public:
     Integrator(const ReferenceScene& scene, const ReferenceCamera& camera, const ReferenceOptions& options);
 
     /// Premultiplied RGBA of one ray (before the background) up to the fraction `end` of it,
-    /// converged as the options say; `finest` takes the smallest step used.
-    glm::dvec4 integrate(const Ray& ray, double end, bool& converged, double& finest) const;
+    /// converged as the options say; `finest` takes the smallest step used (shadow rays' too);
+    /// `shadowsConverged` says whether every shadow ray of the integration kept converged.
+    glm::dvec4 integrate(const Ray& ray, double end, bool& converged, bool& shadowsConverged, double& finest) const;
 
 private:
     /// Where the ray is inside the box of `m`, as fractions [a, b] of the ray; false if nowhere.
     static bool boxSpan(const Medium& m, const Ray& ray, double& a, double& b);
-    /// Front-to-back over [u0, u1] of the ray with `step` world units, sampled at step midpoints.
-    glm::dvec4 march(const Ray& ray, double u0, double u1, double step) const;
+    /// Front-to-back over [u0, u1] of the ray with `step` world units, sampled at step midpoints;
+    /// its shadow rays add to `tally`.
+    glm::dvec4 march(const Ray& ray, double u0, double u1, double step, ShadowTally& tally) const;
     /// Whether every clip shape keeps world point `p`.
     bool kept(const glm::dvec3& p) const;
 
     ReferenceOptions _options;
     std::vector<Medium> _media;
-    std::vector<Clip> _clips;
+    std::vector<Clip> _clips;  ///< from world coordinates
     double _unit = 1.0;
 };
 

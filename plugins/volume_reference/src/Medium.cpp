@@ -1,4 +1,4 @@
-// The reference's trilinear field: values, exact gradients and central differences.
+// The reference's trilinear field: values, exact gradients, central differences, classification.
 #include "Medium.h"
 
 #include <algorithm>
@@ -62,6 +62,14 @@ double Medium::value(const glm::dvec3& tc, glm::dvec3* gradient) const
             }
     if (gradient) *gradient = g;
     return sum;
+}
+
+bool Medium::classify(const glm::dvec3& tc, osg::Vec4& rgba) const
+{
+    const double v = value(tc);
+    if (std::isnan(v)) return false;  // NaN voxels are empty
+    rgba = tf->evaluate(std::clamp(v, domainMin, domainMax));
+    return !(rgba.a() <= 0.0);
 }
 
 }  // namespace volren::reference

@@ -1,11 +1,14 @@
 #pragma once
 // Internal to the reference renderer: one volume as the integrator samples it (the trilinear
-// field, its gradients, the transfer function) and how its samples are lit.
+// field, its gradients, the transfer function), how its samples are lit and what shadows them.
+#include <volume_model/ClipNode.h>
 #include <volume_reference/ReferenceRenderer.h>
 
 #include <glm/glm.hpp>
 #include <osg/Matrixd>
 
+#include <cmath>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -16,6 +19,22 @@ inline glm::dvec3 toGlm(const osg::Vec3d& v) { return {v.x(), v.y(), v.z()}; }
 /// How a medium's samples are lit (the node's Shading and Illumination choices).
 enum class Shading { None, Lighting, Threshold, Surface };
 enum class Illumination { None, Lambert, BlinnPhong, CookTorrance };
+
+/// A clip shape and the transform into its own coordinates (from world in the integrator, from
+/// the medium's local coordinates in a Medium).
+struct Clip
+{
+    const ClipNode* node;
+    osg::Matrixd toShape;
+};
+
+/// What the shadow rays of one march needed: whether every one reached its tolerance, and the
+/// smallest step any took (world units).
+struct ShadowTally
+{
+    bool converged = true;
+    double finest = std::numeric_limits<double>::infinity();
+};
 
 /// The trilinear cell of a texture coordinate along each axis: the two voxel indices, their
 /// weights, and d(weight of the upper voxel)/d(local unit) (0 where the field is clamped).
@@ -45,6 +64,18 @@ struct Medium
     /// Lights in the node's local coordinates: position (w = 0: direction towards the light) and colour.
     std::vector<std::pair<glm::dvec4, glm::dvec3>> lights;
     ReferenceOptions::Gradient gradientKind = ReferenceOptions::Gradient::CentralDifferences;
+    /// Shadows of lit samples (Exact: each light's term times the transmittance to it through
+    /// this medium, clipped as `clips` say), and how their rays converge: steps from
+    /// shadowFirstStep x Δ0 halved until two transmittances differ by at most shadowTolerance,
+    /// or the step reaches shadowFinestStep x Δ0.
+    ReferenceScene::Shadows shadows = ReferenceScene::Shadows::None;
+    double shadowTolerance = 2.5e-5, shadowFirstStep = 0.25, shadowFinestStep = 1.0 / 4096.0;
+    osg::Matrixd localToWorld;
+    std::vector<Clip> clips;  ///< the clip shapes that apply, from local coordinates
+    /// Shadow rays' empty-space test, per block of 4^3 trilinear cells: whether the TF gives
+    /// every value the field takes there opacity 0 (their samples would add nothing).
+    std::vector<unsigned char> emptyBlocks;
+    glm::ivec3 blockCount{0, 0, 0};
 
     /// Trilinear interpolation of the grid's central differences (per local unit) at `tc`.
     glm::dvec3 centralDifferences(const glm::dvec3& tc) const;
@@ -52,16 +83,30 @@ struct Medium
     /// and, when `gradient` is given, its exact gradient per local (world) unit; zero along an
     /// axis where the field is clamped (outside the outermost voxel centres).
     double value(const glm::dvec3& tc, glm::dvec3* gradient = nullptr) const;
+    /// The TF's colour and opacity at `tc`; false where the medium is empty (a NaN value, or
+    /// opacity 0). The view ray's and shadow rays' medium alike.
+    bool classify(const glm::dvec3& tc, osg::Vec4& rgba) const;
+    /// Extinction per length unit of a sample of TF opacity `alpha` in (0, 1): -ln(1 - α) / Δ0.
+    double extinction(double alpha) const { return -std::log1p(-alpha) / unitLength; }
     /// Emitted colour of a sample of TF colour `albedo` and opacity `alpha` at `tc` (local point
-    /// `local`), seen along `view` (unit, towards the eye, local axes).
+    /// `local`), seen along `view` (unit, towards the eye, local axes); shadow rays add to `tally`.
     glm::dvec3 shade(const glm::dvec3& tc, const glm::dvec3& local, const glm::dvec3& view, const glm::dvec3& albedo,
-                     double alpha) const;
+                     double alpha, ShadowTally& tally) const;
+    /// Transmittance from local point `local` along the unit local direction `l` over
+    /// min(`distance`, the way out of the box): exp(-the integral of the extinction, in world
+    /// lengths as the view ray's), converged; 0 past an opaque (α >= 1) point, 1 for no path.
+    double transmittance(const glm::dvec3& local, const glm::dvec3& l, double distance, ShadowTally& tally) const;
+    /// Fills emptyBlocks from the volume and the TF.
+    void findEmptyBlocks();
+    /// Whether `tc` lies in an empty block (false when there are none).
+    bool inEmptyBlock(const glm::dvec3& tc) const;
     /// Light reflected towards `v` from a unit light from `l` by a surface of normal `n`.
     glm::dvec3 illuminate(const glm::dvec3& n, const glm::dvec3& v, const glm::dvec3& l, const glm::dvec3& albedo) const;
 };
 
 /// Sets how `m` is lit from the volume's choices (the renderer's, or the node's own when lights
-/// reach it: `lit`); throws std::invalid_argument for a Shading or Illumination it has no model of.
+/// reach it: `lit`): Shading, Illumination, and shadows (Placed::shadows, else from Shadowing);
+/// throws std::invalid_argument for a Shading, Illumination or Shadowing it has no model of.
 void setShading(Medium& m, const ReferenceScene::Placed& placed, bool lit);
 
 }  // namespace volren::reference

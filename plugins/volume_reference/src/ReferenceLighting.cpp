@@ -1,16 +1,18 @@
-// The reference's lighting: the Shading and Illumination models the renderer's implementations
-// are checked against, chosen per volume from the renderer's choices or the node's settings.
+// The reference's lighting: the Shading, Illumination and Shadowing models the renderer's
+// implementations are checked against, chosen per volume from the renderer's choices or the
+// node's settings.
 #include "Medium.h"
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
 namespace volren::reference {
 
 glm::dvec3 Medium::shade(const glm::dvec3& tc, const glm::dvec3& local, const glm::dvec3& view, const glm::dvec3& albedo,
-                         double alpha) const
+                         double alpha, ShadowTally& tally) const
 {
     if (shading == Shading::None || (shading == Shading::Threshold && alpha < shadingThreshold)) return albedo;
     glm::dvec3 gradient;
@@ -26,7 +28,12 @@ glm::dvec3 Medium::shade(const glm::dvec3& tc, const glm::dvec3& local, const gl
         const glm::dvec3 toLight = position.w == 0.0 ? glm::dvec3(position) : glm::dvec3(position) - local;
         const double length = glm::length(toLight);
         if (!(length > 0.0)) continue;
-        colour += lightColour * illuminate(normal, view, toLight / length, albedo);
+        const glm::dvec3 term = lightColour * illuminate(normal, view, toLight / length, albedo);
+        // Exact shadows: the light's term times the transmittance to it (none where it adds nothing).
+        if (shadows == ReferenceScene::Shadows::None || term == glm::dvec3(0.0)) colour += term;
+        else
+            colour += term * transmittance(local, toLight / length,
+                                           position.w == 0.0 ? std::numeric_limits<double>::infinity() : length, tally);
     }
     if (shading != Shading::Surface) return colour;
     // lighting_surface: lit by w = 1 - exp(-|g| / (0.05 G)), G = the TF window per smallest spacing.
@@ -102,6 +109,16 @@ void setShading(Medium& m, const ReferenceScene::Placed& placed, bool lit)
     else
         throw std::invalid_argument("reference: no model for Illumination '" + illumination + "' (volume '" +
                                     node.getName() + "')");
+    if (placed.shadows) {
+        m.shadows = *placed.shadows;
+    } else {
+        const std::string shadowing = decided || lit ? choiceOf(placed, s, "Shadowing") : "null";
+        if (shadowing == "null") m.shadows = ReferenceScene::Shadows::None;
+        else if (shadowing == "ray") m.shadows = ReferenceScene::Shadows::Exact;
+        else
+            throw std::invalid_argument("reference: no model for Shadowing '" + shadowing + "' (volume '" +
+                                        node.getName() + "'; Placed::shadows may say which it approximates)");
+    }
     m.ambient = s.ambient;
     m.specular = s.specular;
     m.shininess = s.shininess;

@@ -34,7 +34,7 @@ ReferenceImage renderReference(const ReferenceScene& scene, const ReferenceCamer
     // the end; with small runs every thread works until the last few pixels.
     constexpr std::size_t run = 8;
     std::atomic<std::size_t> nextPixel{0};
-    std::atomic<std::size_t> unconverged{0};
+    std::atomic<std::size_t> unconverged{0}, unconvergedShadows{0};
     double finest = std::numeric_limits<double>::infinity();
     std::mutex finestMutex;
     auto work = [&] {
@@ -58,9 +58,10 @@ ReferenceImage renderReference(const ReferenceScene& scene, const ReferenceCamer
                 }
                 if (withGeometry)
                     for (int k = 0; k < 4; ++k) behind[k] = options.geometryColour[pixel * 4 + k];
-                bool converged = true;
-                const glm::dvec4 c = integrator.integrate(ray, end, converged, localFinest);
-                if (!converged) ++unconverged;
+                bool converged = true, shadowsConverged = true;
+                const glm::dvec4 c = integrator.integrate(ray, end, converged, shadowsConverged, localFinest);
+                if (!converged || !shadowsConverged) ++unconverged;
+                if (!shadowsConverged) ++unconvergedShadows;
                 double* out = &image.rgba[pixel * 4];
                 for (int k = 0; k < 4; ++k) out[k] = c[k] + (1.0 - c.a) * behind[k];
             }
@@ -74,6 +75,7 @@ ReferenceImage renderReference(const ReferenceScene& scene, const ReferenceCamer
     work();
     for (std::thread& t : pool) t.join();
     image.unconverged = unconverged;
+    image.unconvergedShadows = unconvergedShadows;
     image.finestStepUsed = std::isfinite(finest) ? finest : 0.0;
     return image;
 }

@@ -29,6 +29,12 @@ struct RenderSettings
     double adaptiveTolerance = 1.0 / 256.0;
     /// Most steps of the march one sample stands for in a homogeneous macrocell (1 = none).
     int adaptiveSteps = 4;
+    /// Henyey-Greenstein anisotropy g of the scattering Illumination (0 isotropic, > 0 forward).
+    double anisotropy = 0.0;
+    /// Shadow rays (Shadowing ray): their step as a factor of the view ray's step.
+    double shadowStepFactor = 1.0;
+    /// Shadow rays stop once the light's transmittance falls below this (0 = never early).
+    double shadowCutoff = 1.0 / 512.0;
     /// Level of detail: the volume is sampled from this level of its mip chain (0 = full
     /// resolution, each level half the voxels along each axis) with a step 2^lod times as long.
     int lod = 0;

@@ -19,6 +19,9 @@ struct ReferenceCamera
 /// How finely to integrate. Each ray starts with steps of `firstStep` x the smallest voxel
 /// spacing and halves them until two successive results differ by at most `tolerance` in every
 /// RGBA channel (then the finer one is kept), or the step reaches `finestStep` x that spacing.
+/// Shadow rays (Shadows::Exact) do the same on their own, from `firstStep` x their volume's
+/// smallest spacing (at least two steps) until two transmittances differ by at most
+/// `tolerance` / 4, or the step reaches `finestStep` x that spacing.
 struct ReferenceOptions
 {
     double tolerance = 1e-4;
@@ -48,8 +51,11 @@ struct ReferenceImage
 {
     int width = 0, height = 0;
     std::vector<double> rgba;
-    std::size_t unconverged = 0;  ///< rays that reached finestStep before the tolerance
-    double finestStepUsed = 0.0;  ///< smallest step any ray needed (world units)
+    /// Rays that reached finestStep before the tolerance: the view ray, or one of the shadow
+    /// rays of the integration it kept (those are also counted in unconvergedShadows).
+    std::size_t unconverged = 0;
+    std::size_t unconvergedShadows = 0;
+    double finestStepUsed = 0.0;  ///< smallest step any ray, view or shadow, needed (world units)
     double at(int x, int y, int c) const { return rgba[(std::size_t(y) * width + x) * 4 + c]; }
 };
 
@@ -60,7 +66,12 @@ struct ReferenceImage
 /// null, lighting, lighting_threshold or lighting_surface; Illumination null, lambert, blinn_phong or
 /// cook_torrance; ambient, specular, shininess, roughness), the normal from
 /// ReferenceOptions::gradient (facing the viewer; the view direction where the gradient is
-/// zero), and no shadows. Other choices throw std::invalid_argument.
+/// zero), and shadows as ReferenceScene::Placed::shadows says (unset: Shadowing null, none;
+/// ray, exact): with exact shadows each light's term (not the ambient) is multiplied by the
+/// transmittance exp(-∫ σ ds) from the sample towards the light, up to where that ray leaves the
+/// sample's own volume box or reaches a point light. σ is that volume's extinction as the view
+/// ray's (-ln(1 - α) / Δ0 of the trilinear value; infinite at α >= 1; NaN voxels and clipped
+/// points empty); other volumes cast no shadow on it. Other choices throw std::invalid_argument.
 ReferenceImage renderReference(const ReferenceScene& scene, const ReferenceCamera& camera,
                                const ReferenceOptions& options = {});
 

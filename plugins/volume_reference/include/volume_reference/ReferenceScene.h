@@ -6,6 +6,7 @@
 #include <osg/Node>
 
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,14 +16,23 @@ namespace volren {
 /// its local-to-world matrix (the nodes are referenced, not copied).
 struct ReferenceScene
 {
+    /// How the light reaching a lit sample is modelled: every light unoccluded, or each light's
+    /// term times the exact transmittance from the sample to the light through the sample's own
+    /// volume (what every GPU Shadowing method approximates).
+    enum class Shadows { None, Exact };
+
     struct Placed
     {
         osg::ref_ptr<const osg::Node> node;
         osg::Matrixd localToWorld;
         /// Volumes: the implementations the renderer chose for it (slot -> name; the lighting
-        /// model is read from Shading and Illumination). Empty: the node's own settings, an
-        /// unset slot being null (referenceSetup() fills it from the CompositionPolicy).
+        /// model is read from Shading, Illumination and Shadowing). Empty: the node's own
+        /// settings, an unset slot being null (referenceSetup() fills it from the CompositionPolicy).
         std::map<std::string, std::string> choice = {};
+        /// Volumes: their shadow model. Unset: from the Shadowing choice (null: None, ray: Exact;
+        /// any other makes renderReference throw). referenceSetup() sets it from the renderer's
+        /// choice, so that an approximation of exact shadows is measured against them.
+        std::optional<Shadows> shadows = {};
     };
     std::vector<Placed> volumes;  ///< VolumeNodes with a volume and a transfer function
     std::vector<Placed> clips;    ///< ClipNodes

@@ -14,13 +14,14 @@ struct ReferenceSetup
 };
 
 /// The volumes of `scene`, each lit as its CompositionPolicy chooses (Shading and Illumination
-/// from the lights that reach it, the pass's `lighting` and forced-null slots applied), its clip
-/// shapes and lights. No GL.
+/// from the lights that reach it, the pass's `lighting` and forced-null slots applied; shadows
+/// from its Shadowing: null none, ray exact), its clip shapes and lights. No GL.
 ReferenceScene referenceScene(VolumeScene& scene);
 
 /// What `volren reference` and `volren bench` measure against: `scene` seen by `camera` with
 /// - each volume lit as the scene's CompositionPolicy chooses (Shading and Illumination from the
-///   lights that reach it, the pass's `lighting` and forced-null slots applied),
+///   lights that reach it, the pass's `lighting` and forced-null slots applied; exact shadows
+///   where its Shadowing approximates them),
 /// - its clip shapes and lights,
 /// - its opaque geometry rasterised once for the same camera with every volume hidden, so that
 ///   the rays end at its depth and the volumes are composited over its colour (`options`'

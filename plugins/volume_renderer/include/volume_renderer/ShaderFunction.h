@@ -81,6 +81,9 @@ struct ImplementationTraits
     /// Acceleration: it changes the image, within a bound it states (adaptive steps), so the
     /// policy never chooses it unless asked; skipping alone is exact.
     bool approximates = false;
+    /// Shadowing: it samples the volume away from the view ray, so every clip shape must be
+    /// known per sample (the policy puts clip planes in ClipPosition instead of ClipRay).
+    bool clipsPerSample = false;
     /// Other names users may give it in settings ("dvr" for dvr_front_to_back).
     std::vector<std::string> aliases = {};
 };

@@ -186,6 +186,8 @@ void CompositionPolicy::chooseClips(ChosenComposition& out, const RenderSettings
                                     const PassSettings& pass) const
 {
     const Wishes wish{settings, pass};
+    const ShaderFunction* shadowing = _registry.find("Shadowing", out.composition.functionFor("Shadowing"));
+    const bool perSample = shadowing && shadowing->traits.clipsPerSample && !wish.off("ClipPosition");
     // Each clip goes to the slot whose named implementation handles its kind, else to the first
     // of ClipRay (whole rays: exact and cheap) and ClipPosition (per sample) that is on and has
     // an implementation for it; otherwise it is dropped.
@@ -198,7 +200,7 @@ void CompositionPolicy::chooseClips(ChosenComposition& out, const RenderSettings
             }
         for (const char* slot : {"ClipRay", "ClipPosition"}) {
             const std::string name = implementationForKind(slot, kind);
-            if (wish.off(slot) || name.empty()) continue;
+            if (wish.off(slot) || name.empty() || (perSample && kind != "depth" && std::string(slot) == "ClipRay")) continue;
             out.composition.instances[slot].push_back(name);
             out.clips[slot].push_back(clip);
             return true;
@@ -207,11 +209,12 @@ void CompositionPolicy::chooseClips(ChosenComposition& out, const RenderSettings
     };
     out.composition.instances["ClipRay"];
     out.composition.instances["ClipPosition"];
-    // Kinds whole rays can be cut by come first, then the opaque geometry's depth, then the rest.
+    // Kinds whole rays can be cut by come first, then the opaque geometry's depth, then the rest;
+    // a Shadowing that samples off the view ray needs every shape per sample.
     std::vector<const ClipInfo*> rest;
     for (const ClipInfo& clip : offer.clips) {
         const std::string kind = clip.node->clipKind();
-        if (implementationForKind("ClipRay", kind).empty()) rest.push_back(&clip);
+        if (implementationForKind("ClipRay", kind).empty() || perSample) rest.push_back(&clip);
         else place(kind, clip);
     }
     if (offer.opaqueGeometry) place("depth", ClipInfo{});

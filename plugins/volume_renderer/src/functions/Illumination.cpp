@@ -27,6 +27,12 @@ void registerIlluminationFunctions(ShaderFunctionRegistry& registry)
                           c.uniform("volren_roughness", float(c.settings.roughness));
                       },
                   .traits = {.calls = SlotList{}, .aliases = {"cooktorrance", "cook-torrance"}}});
+    // Volume scattering (no normal): the phase function between the light and the view.
+    registry.add({.slot = "Illumination",
+                  .name = "henyey_greenstein",
+                  .uniforms = {{"volren_anisotropy", "float", ""}},
+                  .bind = [](BindContext& c) { c.uniform("volren_anisotropy", float(c.settings.anisotropy)); },
+                  .traits = {.calls = SlotList{}, .aliases = {"hg", "phase", "henyeygreenstein", "scattering"}}});
 }
 
 }  // namespace volren

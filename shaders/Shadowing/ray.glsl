@@ -1,0 +1,30 @@
+// Shadowing/ray: a secondary march from the sample towards the light through the same volume's
+// classified medium, to where it leaves the box or reaches a point light. Segments of at most
+// volren_shadowStep world units tile that path exactly and are sampled at their midpoints (a
+// homogeneous medium gives exp(-sigma*L) at any step); the optical depth of each is corrected
+// for its length like the view ray's. Clipped-away samples (every clip shape is per sample when
+// this shadowing is chosen) cast no shadow. The march stops once the transmittance falls below
+// volren_shadowCutoff, returning what it has reached.
+// float volren_shadow(vec3 pos, vec3 lightDir, float lightDistance)
+float volren_shadow(vec3 pos, vec3 lightDir, float lightDistance)
+{
+    vec3 dirTex = lightDir / volren_worldSize;  // texture space per world unit
+    float exitDistance = 1e30;
+    for (int a = 0; a < 3; ++a) {
+        if (dirTex[a] > 1e-30) exitDistance = min(exitDistance, (1.0 - pos[a]) / dirTex[a]);
+        else if (dirTex[a] < -1e-30) exitDistance = min(exitDistance, -pos[a] / dirTex[a]);
+    }
+    float len = min(exitDistance, lightDistance);
+    if (!(len > 0.0) || !(volren_shadowStep > 0.0)) return 1.0;
+    int count = int(min(ceil(len / volren_shadowStep), 16384.0));
+    float h = len / float(count);
+    float ratio = h / volren_referenceStep;
+    float depth = 0.0;
+    for (int i = 0; i < count; ++i) {
+        vec3 p = pos + dirTex * ((float(i) + 0.5) * h);
+        if (volren_clipPosition(p)) continue;
+        depth += volren_opticalDepth(volren_classify(volren_fetchScalar(p)).a, ratio);
+        if (depth >= volren_shadowCutoffDepth) break;
+    }
+    return exp(-depth);
+}
