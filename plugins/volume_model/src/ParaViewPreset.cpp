@@ -92,16 +92,8 @@ osg::ref_ptr<TransferFunction> readParaViewPreset(const std::string& path, const
         channel[3][channel[0].rbegin()->first] = 1.0;
     }
 
-    // Every channel is piecewise linear: control points at the union of their positions give
-    // exactly the same function.
-    osg::ref_ptr<TransferFunction> tf = new TransferFunction;
+    osg::ref_ptr<TransferFunction> tf = transferFunctionFromCurves(channel);
     tf->setName(preset->value("Name", path));
-    for (const auto& ch : channel)
-        for (const auto& point : ch) {
-            const double x = point.first;
-            tf->setPoint(x, osg::Vec4(float(piecewiseLinear(channel[0], x)), float(piecewiseLinear(channel[1], x)),
-                                      float(piecewiseLinear(channel[2], x)), float(piecewiseLinear(channel[3], x))));
-        }
     return tf;
 }
 

@@ -84,14 +84,4 @@ osg::ref_ptr<osg::Node> readDefaultScene()
     return readStrictly([&] { return osgt->readNode(text, where.get()); }, inputName(""));
 }
 
-osg::ref_ptr<osg::Node> readInput(const std::string& input, const LoadProgress* progress)
-{
-    if (input.empty()) return readDefaultScene();
-    if (isVolumeFile(input)) {
-        osg::ref_ptr<Volume> volume = readVolumeFile(input, progress ? withLoadProgress(nullptr, progress).get() : nullptr);
-        return makeDefaultScene(volume.get());
-    }
-    return readSceneFile(input);
-}
-
 }  // namespace volren

@@ -135,14 +135,7 @@ osg::ref_ptr<TransferFunction> SlicerVolumeProperty::transferFunction() const
     for (const auto& [x, rgb] : colour)
         for (int c = 0; c < 3; ++c) channel[c][x] = rgb[c];
     for (const auto& [x, a] : scalarOpacity) channel[3][x] = a;
-    osg::ref_ptr<TransferFunction> tf = new TransferFunction;
-    for (const auto& ch : channel)
-        for (const auto& point : ch) {
-            const double x = point.first;
-            tf->setPoint(x, osg::Vec4(float(piecewiseLinear(channel[0], x)), float(piecewiseLinear(channel[1], x)),
-                                      float(piecewiseLinear(channel[2], x)), float(piecewiseLinear(channel[3], x))));
-        }
-    return tf;
+    return transferFunctionFromCurves(channel);
 }
 
 SlicerVolumeProperty readSlicerVolumeProperty(const std::string& path)

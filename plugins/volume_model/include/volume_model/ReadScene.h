@@ -16,11 +16,6 @@ osg::ref_ptr<osg::Node> readSceneFile(const std::string& path);
 /// found in shareDirectory()/data).
 osg::ref_ptr<osg::Node> readDefaultScene();
 
-/// The scene a user's INPUT names: "" the default scene, a volume file (isVolumeFile) its
-/// default scene (makeDefaultScene; `progress`, if given, hears of the load), else a scene
-/// file. Throws std::runtime_error naming the input and the reason.
-osg::ref_ptr<osg::Node> readInput(const std::string& input, const LoadProgress* progress = nullptr);
-
 /// INPUT as messages name it ("the default scene (scenes/default.osgt)" for "").
 std::string inputName(const std::string& input);
 
