@@ -28,9 +28,10 @@ vec3 volren_gradient(vec3 pos);
 // Illumination: light reflected towards viewDir by a unit light from lightDir.
 vec3 volren_illuminate(vec3 normal, vec3 viewDir, vec3 lightDir, vec3 albedo);
 
-// Shadowing: fraction of the light from lightDir that reaches pos; the light is lightDistance
-// world units away along lightDir (1e30 for directional lights).
-float volren_shadow(vec3 pos, vec3 lightDir, float lightDistance);
+// Shadowing: fraction of light `light` (index into the scene's lights) coming from lightDir that
+// reaches pos; the light is lightDistance world units away along lightDir (1e30 for directional
+// lights).
+float volren_shadow(vec3 pos, vec3 lightDir, float lightDistance, int light);
 
 // Shading: emitted colour of a classified sample seen along viewDir (towards the eye).
 vec3 volren_shade(vec3 pos, vec3 viewDir, vec4 classified);

@@ -42,6 +42,7 @@ const std::vector<std::pair<std::string, double RenderSettings::*>>& exactNumber
         {"adaptiveTolerance", &RenderSettings::adaptiveTolerance},
         {"shadowStepFactor", &RenderSettings::shadowStepFactor},
         {"shadowCutoff", &RenderSettings::shadowCutoff},
+        {"lightVolumeScale", &RenderSettings::lightVolumeScale},
         {"anisotropy", &RenderSettings::anisotropy}};
     return fields;
 }

@@ -12,7 +12,7 @@ vec3 volren_applyLights(vec3 pos, vec3 viewDir, vec4 classified)
         float len = length(toLight);
         if (!(len > 0.0)) continue;
         vec3 lightDir = toLight / len;
-        colour += volren_lightColour[i] * volren_shadow(pos, lightDir, light.w == 0.0 ? 1e30 : len) *
+        colour += volren_lightColour[i] * volren_shadow(pos, lightDir, light.w == 0.0 ? 1e30 : len, i) *
                   volren_illuminate(normal, viewDir, lightDir, classified.rgb);
     }
     return colour;

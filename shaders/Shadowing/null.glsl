@@ -1,6 +1,6 @@
 // Shadowing/null: every light reaches every sample unoccluded.
-// float volren_shadow(vec3 pos, vec3 lightDir, float lightDistance)
-float volren_shadow(vec3 pos, vec3 lightDir, float lightDistance)
+// float volren_shadow(vec3 pos, vec3 lightDir, float lightDistance, int light)
+float volren_shadow(vec3 pos, vec3 lightDir, float lightDistance, int light)
 {
     return 1.0;
 }

@@ -5,8 +5,8 @@
 // for its length like the view ray's. Clipped-away samples (every clip shape is per sample when
 // this shadowing is chosen) cast no shadow. The march stops once the transmittance falls below
 // volren_shadowCutoff, returning what it has reached.
-// float volren_shadow(vec3 pos, vec3 lightDir, float lightDistance)
-float volren_shadow(vec3 pos, vec3 lightDir, float lightDistance)
+// float volren_shadow(vec3 pos, vec3 lightDir, float lightDistance, int light)
+float volren_shadow(vec3 pos, vec3 lightDir, float lightDistance, int light)
 {
     vec3 dirTex = lightDir / volren_worldSize;  // texture space per world unit
     float exitDistance = 1e30;

@@ -274,7 +274,7 @@ std::string fileText(const std::string& path)
 TEST(CompositionPolicy, DeclaredCallsMatchEachImplementationsSource)
 {
     // The policy decides which slots are dead code from what implementations declare they call:
-    // the declarations must say what the GLSL (with its includes) does.
+    // the declarations must say what the GLSL (with its includes and build program) does.
     const ShaderFunctionRegistry& registry = ShaderFunctionRegistry::instance();
     std::size_t checked = 0;
     for (const SlotInfo& s : slots())
@@ -283,6 +283,7 @@ TEST(CompositionPolicy, DeclaredCallsMatchEachImplementationsSource)
             if (!f->traits.calls) continue;
             std::string text = fileText(registry.locate(f->file));
             for (const std::string& include : f->includes) text += fileText(registry.locate(include));
+            if (!f->buildFile.empty()) text += fileText(registry.locate(f->buildFile));  // its build's calls too
             const std::set<std::string> declared(f->traits.calls->begin(), f->traits.calls->end());
             EXPECT_EQ(calledSlots(text), declared) << s.name << "/" << name;
             for (const std::string& r : f->traits.required) EXPECT_TRUE(declared.count(r)) << s.name << "/" << name << " requires " << r;

@@ -72,6 +72,7 @@ bool RenderSettings::operator==(const RenderSettings& o) const
            debugView == o.debugView && macrocellSize == o.macrocellSize &&
            same(adaptiveTolerance, o.adaptiveTolerance) && adaptiveSteps == o.adaptiveSteps && lod == o.lod &&
            same(shadowStepFactor, o.shadowStepFactor) && same(shadowCutoff, o.shadowCutoff) &&
+           same(lightVolumeScale, o.lightVolumeScale) &&
            same(anisotropy, o.anisotropy) &&
            memoryBudgetMB == o.memoryBudgetMB && brickSize == o.brickSize && lodByDistance == o.lodByDistance && texturePrecision == o.texturePrecision &&
            functions == o.functions && forceNull == o.forceNull;
@@ -98,6 +99,7 @@ std::vector<std::pair<std::string, std::string>> RenderSettings::keys()
         {"anisotropy", "Henyey-Greenstein g of illumination=henyey_greenstein (-0.99..0.99; 0 isotropic, > 0 forward)"},
         {"shadowStepFactor", "shadow rays (shadowing=ray): their step as a factor of the view ray's (> 0)"},
         {"shadowCutoff", "shadow rays stop once the light's transmittance falls below this (0 = never; default 1/512)"},
+        {"lightVolumeScale", "light volume (shadowing=light_volume): its resolution as a fraction of the volume's per axis (0-1]"},
         {"lod", "level of detail: mip level the volume is sampled from, the step growing as 2^lod (0-16)"},
         {"lodByDistance", "level of detail by distance: the level rises where a pixel covers more than a voxel (on/off)"},
         {"memoryBudgetMB", "GPU memory for one volume's voxels in MiB (0 = auto: half of what the GPU reports, else 2048); larger volumes are bricked"},
@@ -134,6 +136,7 @@ std::string RenderSettings::get(const std::string& key) const
     if (k == "anisotropy") return number(anisotropy);
     if (k == "shadowstepfactor") return number(shadowStepFactor);
     if (k == "shadowcutoff") return number(shadowCutoff);
+    if (k == "lightvolumescale") return number(lightVolumeScale);
     if (k == "lod") return std::to_string(lod);
     if (k == "memorybudgetmb") return std::to_string(memoryBudgetMB);
     if (k == "bricksize") return std::to_string(brickSize);
@@ -199,6 +202,7 @@ bool RenderSettings::set(const std::string& key, const std::string& value, std::
         {"shadowstepfactor", &shadowStepFactor, 0.0, 1e3, true},
         {"anisotropy", &anisotropy, -0.99, 0.99, false},
         {"shadowcutoff", &shadowCutoff, 0.0, 1.0, false},
+        {"lightvolumescale", &lightVolumeScale, 0.0, 1.0, true},
     };
     double v = 0.0;
     if (k == "samplerate") {

@@ -35,6 +35,9 @@ struct RenderSettings
     double shadowStepFactor = 1.0;
     /// Shadow rays stop once the light's transmittance falls below this (0 = never early).
     double shadowCutoff = 1.0 / 512.0;
+    /// Propagated light volume (Shadowing light_volume): its resolution as a fraction of the
+    /// volume's along each axis (0, 1].
+    double lightVolumeScale = 0.5;
     /// Level of detail: the volume is sampled from this level of its mip chain (0 = full
     /// resolution, each level half the voxels along each axis) with a step 2^lod times as long.
     int lod = 0;

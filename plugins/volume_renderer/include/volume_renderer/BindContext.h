@@ -1,5 +1,6 @@
 #pragma once
 #include <osg/Matrixd>
+#include <osg/Node>
 
 #include <optional>
 #include <osg/StateSet>
@@ -34,6 +35,9 @@ struct RenderSettings;
 ///   (Classification's `variation` mirror), else 128 (adaptive sampling).
 /// - BrickPool: the volume's mip levels in bricks in a pool texture with their page table
 ///   (BrickPool.h; VolumeStorage bricked), within the node's memory budget.
+/// - LightVolume: per node, each light's transmittance (one half-float channel per light, up to
+///   four) over the volume's box at lightVolumeScale of its resolution, built on the GPU by the
+///   implementation's build program (ShaderFunction::buildFile) when what it depends on changes.
 enum class AuxData
 {
     VolumeTexture,
@@ -45,7 +49,8 @@ enum class AuxData
     OccupancyGrid,
     MacrocellRanges,
     HomogeneityGrid,
-    BrickPool
+    BrickPool,
+    LightVolume
 };
 
 struct BrickedVolume;
@@ -96,6 +101,8 @@ struct BindContext
     std::string member = {};
     /// Multi-volume sets: the set box's texture space -> this member's texture space.
     osg::Matrixd setToMember = {};
+    /// GPU builds of auxiliary data to draw before the ray caster, under its state.
+    std::vector<osg::ref_ptr<osg::Node>> prepasses = {};
 
     /// Name of `base` for the instance being bound (adds the template and member suffixes).
     std::string name(const std::string& base) const { return base + suffix + member; }

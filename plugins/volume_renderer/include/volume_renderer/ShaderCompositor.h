@@ -33,6 +33,11 @@ struct ComposedProgram
     std::string fragmentSource;               ///< the composed fragment source
     std::vector<std::string> sourceNames;     ///< GLSL source-string number -> file
     bool writesDepth = false;                 ///< the traversal reports surface hits
+    /// The compute program of an implementation's `buildFile` (null when none has one), with its
+    /// source and source-string names; it shares the ray caster's uniform and sampler names.
+    osg::ref_ptr<osg::Program> buildProgram;
+    std::string buildSource;
+    std::vector<std::string> buildSourceNames;
     /// Whether an implementation of this program needs `aux`.
     bool needs(AuxData aux) const;
 };
@@ -52,6 +57,8 @@ public:
 
     /// Rewrites "N:line" references of a GLSL info log into "file:line".
     static std::string explainLog(const std::string& log, const ComposedProgram& program);
+    /// The same for a program whose source strings are `sourceNames` (a build program's).
+    static std::string explainLog(const std::string& log, const std::vector<std::string>& sourceNames);
 
     /// Number of programs held (in use or among the recently used).
     std::size_t programCount() const;

@@ -99,6 +99,10 @@ struct ShaderFunction
     std::string name = {};                   ///< implementation name, e.g. "dvr_front_to_back"
     std::string file = {};                   ///< fragment source relative to a shader folder; empty: <slot>/<name>.glsl
     std::string vertexFile = {};             ///< vertex source (RaySetup only), relative path
+    /// A compute shader (its main) that builds this implementation's auxiliary volume on the GPU
+    /// through the composition's VolumeStorage, Reconstruction, Classification and ClipPosition;
+    /// the compositor composes it with them (ComposedProgram::buildProgram). Empty: none.
+    std::string buildFile = {};
     std::vector<std::string> includes = {};  ///< helper files emitted (once) before `file`
     std::vector<UniformDecl> uniforms = {};  ///< uniforms it reads
     std::vector<TextureDecl> textures = {};  ///< samplers it reads

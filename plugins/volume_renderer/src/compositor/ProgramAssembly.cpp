@@ -172,13 +172,15 @@ std::string ProgramAssembly::source(const ShaderFunction* f) const
     }
 }
 
-ProgramAssembly::Sources ProgramAssembly::slotSources(int member) const
+ProgramAssembly::Sources ProgramAssembly::slotSources(int member, const std::set<std::string>* only) const
 {
-    // The slots of the set's own composition (member < 0), or of one member.
+    // The slots of the set's own composition (member < 0), or of one member; only those in
+    // `only` when given.
     Sources out;
     std::set<std::string> included;
     for (const SlotInfo& s : slots()) {
         if (member >= 0 && s.perSet) continue;
+        if (only && !only->count(s.name)) continue;
         std::vector<const Binding*> mine;
         for (const Binding& b : _result.bindings)
             if (b.member == member && b.function->slot == s.name) mine.push_back(&b);
@@ -246,6 +248,39 @@ void ProgramAssembly::appendMembers(const std::string& numerics, const std::stri
                skips + "    tRecheck = 1e30;\n    return t;\n}\n");
 }
 
+void ProgramAssembly::assembleBuild(const std::string& declarations, const std::string& numerics,
+                                    const std::string& slotDeclarations)
+{
+    // The compute program of a single volume's implementation that builds auxiliary data: the
+    // same declarations (it reads the ray caster's uniforms and textures) and the slots that
+    // sample and classify the volume, then the build file's main().
+    const ShaderFunction* builder = nullptr;
+    for (const Binding& b : _result.bindings)
+        if (b.member < 0 && !b.function->buildFile.empty()) builder = b.function;
+    if (!builder) return;
+    static const std::set<std::string> sampling = {"VolumeStorage", "Reconstruction", "Classification", "ClipPosition"};
+    std::ostringstream src;
+    auto add = [&](const std::string& name, const std::string& text) {
+        const int index = int(_result.buildSourceNames.size());
+        _result.buildSourceNames.push_back(name);
+        src << "// ---- " << name << " ----\n#line 1 " << index << "\n" << text << "\n";
+    };
+    src << header();
+    _result.buildSourceNames.push_back("<generated declarations>");
+    src << declarations;
+    add("common/numerics.glsl", numerics);
+    add("slots.glsl", slotDeclarations);
+    for (const auto& [name, text] : slotSources(-1, &sampling)) add(name, text);
+    std::string main;
+    try {
+        main = file(builder->buildFile);
+    } catch (const std::exception& e) {
+        throw std::runtime_error("slot " + builder->slot + ", implementation " + builder->name + ": " + e.what());
+    }
+    add(builder->buildFile, main);
+    _result.buildSource = src.str();
+}
+
 const ShaderFunction* ProgramAssembly::assemble()
 {
     pick(_composition, -1);
@@ -261,6 +296,7 @@ const ShaderFunction* ProgramAssembly::assemble()
     for (const auto& [name, text] : slotSources(-1)) append(name, text);
     if (!_composition.members.empty()) appendMembers(numerics, slotDeclarations);
     _result.fragmentSource = _src.str();
+    assembleBuild(decls, numerics, slotDeclarations);
     return _raySetup;
 }
 

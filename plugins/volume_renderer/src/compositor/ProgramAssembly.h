@@ -14,7 +14,8 @@ namespace volren {
 /// Builds the bindings, declarations and fragment source of one composition into `result`:
 /// string 0 is the generated header and declarations, then the common files, then one string
 /// per implementation (template instances renamed apart), then, for a multi-volume set, each
-/// member's slots renamed by its suffix and the dispatchers over the members.
+/// member's slots renamed by its suffix and the dispatchers over the members. When an
+/// implementation has a build file, also the source of its compute program.
 class ProgramAssembly
 {
 public:
@@ -31,10 +32,11 @@ private:
     void append(const std::string& name, const std::string& text);
     std::string source(const ShaderFunction* f) const;
     std::string file(const std::string& relative) const;
-    Sources slotSources(int member) const;
+    Sources slotSources(int member, const std::set<std::string>* only = nullptr) const;
     std::pair<std::string, std::string> templateSources(const SlotInfo& slot, const std::vector<const Binding*>& mine,
                                                         Sources& out) const;
     void appendMembers(const std::string& numerics, const std::string& slotDeclarations);
+    void assembleBuild(const std::string& declarations, const std::string& numerics, const std::string& slotDeclarations);
 
     const ShaderFunctionRegistry& _registry;
     const Composition& _composition;

@@ -10,7 +10,10 @@ namespace volren {
 bool CompositionPolicy::canShareRay(const Composition& composition) const
 {
     const ShaderFunction* traversal = _registry.find("RayTraversal", composition.functionFor("RayTraversal"));
-    return traversal && traversal->traits.emissionAbsorption && composition.functionFor("RaySetup") != "null";
+    // A Shadowing that builds auxiliary data per node (a light volume) has no build for set members.
+    const ShaderFunction* shadowing = _registry.find("Shadowing", composition.functionFor("Shadowing"));
+    return traversal && traversal->traits.emissionAbsorption && composition.functionFor("RaySetup") != "null" &&
+           !(shadowing && !shadowing->buildFile.empty());
 }
 
 std::vector<RayGroup> CompositionPolicy::rayGroups(const std::vector<osg::BoundingBoxd>& bounds,

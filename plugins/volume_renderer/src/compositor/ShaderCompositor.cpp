@@ -118,11 +118,24 @@ std::shared_ptr<const ComposedProgram> ShaderCompositor::build(const Composition
     program->addShader(fragment);
     program->addBindFragDataLocation("volren_fragColor", 0);
     result->program = program;
+    if (!result->buildSource.empty()) {
+        osg::ref_ptr<osg::Program> build = new osg::Program;
+        build->setName(std::string(label) + " build");
+        osg::ref_ptr<osg::Shader> compute = new osg::Shader(osg::Shader::COMPUTE, result->buildSource);
+        compute->setName(std::string(label) + " build compute");
+        build->addShader(compute);
+        result->buildProgram = build;
+    }
     OSG_INFO << "volren: composed program " << result->key << std::endl;
     return result;
 }
 
 std::string ShaderCompositor::explainLog(const std::string& log, const ComposedProgram& program)
+{
+    return explainLog(log, program.sourceNames);
+}
+
+std::string ShaderCompositor::explainLog(const std::string& log, const std::vector<std::string>& sourceNames)
 {
     // Mesa writes "N:LINE(COL): error", NVIDIA "N(LINE) : error"; N is the #line source-string number.
     static const std::regex ref(R"(^(\d+)(?::(\d+)\(\d+\)|\((\d+)\)))");
@@ -133,8 +146,8 @@ std::string ShaderCompositor::explainLog(const std::string& log, const ComposedP
         if (std::regex_search(line, m, ref)) {
             const std::size_t index = std::stoul(m[1].str());
             const std::string lineNo = m[2].matched ? m[2].str() : m[3].str();
-            if (index < program.sourceNames.size())
-                line = program.sourceNames[index] + ":" + lineNo + line.substr(std::size_t(m.length()));
+            if (index < sourceNames.size())
+                line = sourceNames[index] + ":" + lineNo + line.substr(std::size_t(m.length()));
         }
         out += line + "\n";
     }

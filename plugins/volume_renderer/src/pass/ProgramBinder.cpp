@@ -3,8 +3,12 @@
 #include <volume_renderer/GraphicsDriver.h>
 #include <volume_renderer/SampleDistance.h>
 
+#include <volume_renderer/VolumeMipChain.h>
+
 #include <cmath>
 #include <cstdio>
+#include <set>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -98,6 +102,51 @@ std::optional<BrickHidingRule> hidingFor(const BindContext& context, const std::
                            .mayShow = classification->mayShow(context)};
 }
 
+/// Everything a light volume's build reads, as text: the values of the uniforms and the textures
+/// of the implementations its program composes (storage, reconstruction, classification, clip
+/// shapes, shadowing), the volume's and the TF's identity and modified counts, the lights.
+std::string lightVolumeKey(const BindContext& context, const std::vector<const Binding*>& bindings)
+{
+    static const std::set<std::string> read = {"VolumeStorage", "Reconstruction", "Classification", "ClipPosition",
+                                               "Shadowing"};
+    std::ostringstream key;
+    key << &context.volume << ' ' << context.volume.modifiedCount() << ' ' << &context.transfer << ' '
+        << context.transfer.modifiedCount() << ' ' << context.lod;
+    char number[40];
+    auto put = [&](double v) {
+        std::snprintf(number, sizeof(number), " %a", v);
+        key << number;
+    };
+    if (context.bricks && context.bricks->pageTable->getImage())  // bricks became resident
+        key << " pages " << context.bricks->pageTable->getImage()->getModifiedCount();
+    for (const LightInfo& light : context.lights)
+        for (int i = 0; i < 4; ++i) put(light.position[i]);
+    for (const Binding* b : bindings) {
+        if (!read.count(b->function->slot)) continue;
+        for (const UniformDecl& u : b->function->uniforms) {
+            const std::string name = (u.shared ? u.name : u.name + b->suffix) + b->memberSuffix;
+            const osg::Uniform* uniform = context.stateSet.getUniform(name);
+            if (!uniform) continue;
+            key << ' ' << name;
+            if (const osg::FloatArray* a = uniform->getFloatArray())
+                for (float v : *a) put(v);
+            if (const osg::DoubleArray* a = uniform->getDoubleArray())
+                for (double v : *a) put(v);
+            if (const osg::IntArray* a = uniform->getIntArray())
+                for (int v : *a) key << ' ' << v;
+            if (const osg::UIntArray* a = uniform->getUIntArray())
+                for (unsigned int v : *a) key << ' ' << v;
+        }
+        for (const TextureDecl& t : b->function->textures) {
+            const std::string name = (t.shared ? t.name : t.name + b->suffix) + b->memberSuffix;
+            auto unit = context.textureUnits.find(name);
+            if (unit == context.textureUnits.end() || name.rfind("volren_lightVolume", 0) == 0) continue;
+            key << ' ' << name << ' ' << context.stateSet.getTextureAttribute(unsigned(unit->second), osg::StateAttribute::TEXTURE);
+        }
+    }
+    return key.str();
+}
+
 }  // namespace
 
 bool bindProgram(BindContext& context, const ComposedProgram& program,
@@ -148,6 +197,10 @@ bool bindProgram(BindContext& context, const ComposedProgram& program,
             gridShapeFor(context.volume.dims(), context.settings.macrocellSize, footprintOf(mine), context.lod);
         context.aux[AuxData::MacrocellRanges] = textures.ranges(context.volume, shape.cellSize, shape.apron, cull);
     }
+    if (needs(AuxData::LightVolume))
+        context.aux[AuxData::LightVolume] = textures.lightVolumes().texture(
+            &context.node, lightVolumeDims(mipDims(context.volume.dims(), context.lod), context.settings.lightVolumeScale),
+            int(context.lights.size()), cull);
 
     static const std::vector<ClipInfo> none;
     for (const Binding* b : mine) {
@@ -158,6 +211,15 @@ bool bindProgram(BindContext& context, const ComposedProgram& program,
         context.clips = it == clips.end() ? none : it->second;
         b->function->bind(context);
     }
+    context.suffix.clear();
+    context.instance = -1;
+    // A light volume is rebuilt, before the ray caster draws, when what its build reads changed.
+    if (needs(AuxData::LightVolume) && program.buildProgram)
+        if (osg::Node* build = textures.lightVolumes().build(&context.node, lightVolumeKey(context, mine),
+                                                             program.buildProgram.get(), context.lights,
+                                                             context.boxSize.length2() > 0.0 ? context.boxSize
+                                                                                             : context.volume.worldSize()))
+            context.prepasses.push_back(build);
     return anyVisible;
 }
 

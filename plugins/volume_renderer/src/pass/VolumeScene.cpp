@@ -52,6 +52,11 @@ void VolumeScene::Pass::draw(osgUtil::CullVisitor& cv, VolumeProxy& proxy, const
     // profile needs, tells the two apart.
     proxy.useVertexArrayObject(cv.getState() && cv.getState()->getUseVertexAttributeAliasing());
     proxy.transform->setMatrix(matrix);
+    if (!proxy.prepasses.empty()) {  // under the ray caster's uniforms and textures
+        cv.pushStateSet(proxy.geometry->getStateSet());
+        for (const osg::ref_ptr<osg::Node>& node : proxy.prepasses) node->accept(cv);
+        cv.popStateSet();
+    }
     int pushed = 0;
     if (proxy.program->needs(AuxData::DepthTexture)) {
         cv.pushStateSet(screen.depthState(cv, proxy.program->textureUnits.at("volren_depthTexture")));
@@ -75,6 +80,7 @@ VolumeProxy& VolumeScene::Pass::update(const VolumeCandidate& c, const ChosenCom
     context.lights = c.offer.lights;
     context.writesDepth = program->writesDepth;
     proxy.hidden = !bindProgram(context, *program, chosen.clips, -1, textures, cull);
+    proxy.prepasses = std::move(context.prepasses);
     return proxy;
 }
 
@@ -189,6 +195,12 @@ std::vector<BrickStatistics> VolumeScene::brickStatistics() const
     return _state->textures.brickStatistics(_state->cull);
 }
 
+std::vector<LightVolumeStatistics> VolumeScene::lightVolumeStatistics() const
+{
+    std::lock_guard<std::mutex> lock(_mutex);
+    return _state->textures.lightVolumes().statistics(_state->cull);
+}
+
 std::size_t VolumeScene::pendingBricks() const
 {
     std::lock_guard<std::mutex> lock(_mutex);
@@ -247,20 +259,25 @@ void VolumeScene::checkPrograms(osg::State& state) const
         // Only what the last cull drew: another viewer of the same scene (a second context) has
         // not applied the programs of proxies it did not draw.
         if (!proxy->program || proxy->lastCull != _state->cull || proxy->hidden) continue;  // hidden: never applied
-        const osg::Program* program = proxy->program->program.get();
-        osg::Program::PerContextProgram* pcp = program->getPCP(state);
-        if (!pcp || pcp->isLinked()) continue;
-        std::string log = "volren: shader program for '" + proxy->key + "' failed:\n";
-        for (unsigned int i = 0; i < program->getNumShaders(); ++i) {
-            std::string shaderLog;
-            const osg::Shader* shader = program->getShader(i);
-            if (osg::Shader::PerContextShader* pcs = shader->getPCS(state); pcs && pcs->getInfoLog(shaderLog))
-                log += shader->getName() + ":\n" + shaderLog;
+        // The ray caster, and the build program of its auxiliary data where it has one.
+        const std::pair<const osg::Program*, const std::vector<std::string>*> programs[] = {
+            {proxy->program->program.get(), &proxy->program->sourceNames},
+            {proxy->program->buildProgram.get(), &proxy->program->buildSourceNames}};
+        for (const auto& [program, names] : programs) {
+            osg::Program::PerContextProgram* pcp = program ? program->getPCP(state) : nullptr;
+            if (!pcp || pcp->isLinked()) continue;
+            std::string log = "volren: shader program " + program->getName() + " for '" + proxy->key + "' failed:\n";
+            for (unsigned int i = 0; i < program->getNumShaders(); ++i) {
+                std::string shaderLog;
+                const osg::Shader* shader = program->getShader(i);
+                if (osg::Shader::PerContextShader* pcs = shader->getPCS(state); pcs && pcs->getInfoLog(shaderLog))
+                    log += shader->getName() + ":\n" + shaderLog;
+            }
+            std::string linkLog;
+            program->getGlProgramInfoLog(state.getContextID(), linkLog);
+            log += linkLog;
+            throw std::runtime_error(ShaderCompositor::explainLog(log, *names));
         }
-        std::string linkLog;
-        program->getGlProgramInfoLog(state.getContextID(), linkLog);
-        log += linkLog;
-        throw std::runtime_error(ShaderCompositor::explainLog(log, *proxy->program));
     }
 }
 

@@ -7,6 +7,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace volren {
 
@@ -20,6 +21,8 @@ struct VolumeProxy
     std::shared_ptr<const ComposedProgram> program;  ///< the program drawn
     osg::Vec3d boxSize;
     bool hidden = false;  ///< its occupancy grids show no sample can be visible: not drawn
+    /// GPU builds of its auxiliary data for this frame, drawn before it under its state.
+    std::vector<osg::ref_ptr<osg::Node>> prepasses;
     unsigned int lastCull = 0;
 
     /// Makes the box of `size` (centred on the transform) and the state of `program`, each only

@@ -1,0 +1,243 @@
+// Shadowing/light_volume against closed forms and against shadow rays. In a homogeneous block lit
+// along an axis, the build is exact at the light volume's texel centres: a texel d voxels below
+// the lit face holds exp(-sigma * d) (the path to the face is integrated exactly, the slices'
+// bilinear gathers read a constant slice). A sample between texel centres reads the trilinear
+// mix of its two neighbours (clamped at the ends), stored in half floats; that is the expected
+// shadow of each view-ray segment, and shadow rays give the continuous exp(-sigma * s).
+#include "RenderFixture.h"
+#include "TestData.h"
+
+#include <volume_model/ClipPlaneNode.h>
+#include <volume_model/DefaultScene.h>
+
+#include <osg/LightSource>
+
+#include <cmath>
+#include <functional>
+
+namespace volren::test {
+namespace {
+
+constexpr int depthVoxels = 16;  // block depth along z (spacing 1)
+constexpr double step = 0.5;     // view step (sampleFactor 0.5)
+constexpr double alpha = 0.08;   // TF opacity of one reference segment (one voxel)
+const double sigma = -std::log1p(-alpha);
+
+class LightVolume : public RenderFixture
+{
+protected:
+    /// `volume` lit by `lights` (Lambert, no ambient) with `shadowing` at light volume `scale`.
+    static osg::ref_ptr<VolumeScene> lit(Volume* volume, TransferFunction* tf, const char* shadowing, double scale = 1.0,
+                                         const std::vector<osg::Vec4>& lights = {{0, 0, 1, 0}})
+    {
+        osg::ref_ptr<VolumeNode> node = volumeNode(volume, tf);
+        node->settings.functions["Shading"] = "lighting";
+        node->settings.functions["Illumination"] = "lambert";
+        node->settings.functions["Shadowing"] = shadowing;
+        node->settings.ambient = 0.0;
+        node->settings.earlyTerminationThreshold = 1.0;
+        node->settings.sampleDistanceFactor = step;
+        node->settings.lightVolumeScale = scale;
+        osg::ref_ptr<VolumeScene> scene = new VolumeScene;
+        scene->addChild(node.get());
+        for (std::size_t i = 0; i < lights.size(); ++i) {
+            osg::ref_ptr<osg::LightSource> source = new osg::LightSource;
+            source->getLight()->setLightNum(int(i));
+            source->getLight()->setPosition(lights[i]);
+            scene->addChild(source.get());
+        }
+        return scene;
+    }
+
+    /// The shadowed over the unshadowed emission of a homogeneous block seen from the light
+    /// (+z), view segments i from `first` on, each shadowed by `shadow(i)`.
+    static double expectedRatio(int first, const std::function<double(int)>& shadow)
+    {
+        const double q = std::exp(-sigma * step);
+        double lit = 0.0, unlit = 0.0, transmittance = 1.0;
+        for (int i = first; i < int(depthVoxels / step); ++i) {
+            const double w = transmittance * (1.0 - q);
+            lit += w * shadow(i);
+            unlit += w;
+            transmittance *= q;
+        }
+        return lit / unlit;
+    }
+
+    /// What a light volume of `n` texels along z reads at `depth` voxels below the lit face of
+    /// the block when its texels hold exp(-sigma * (depth of their centre - `cut`)), or 1 above
+    /// `cut` (material above it clipped away): the linear mix of the two nearest centres.
+    static double interpolated(double depth, int n, double cut = 0.0)
+    {
+        const double texel = double(depthVoxels) / n;
+        auto stored = [&](int k) {  // texel k counted from the lit face
+            const double d = (k + 0.5) * texel;
+            return d <= cut ? 1.0 : std::exp(-sigma * (d - cut));
+        };
+        const double u = std::clamp(depth / texel - 0.5, 0.0, n - 1.0);
+        const int k = std::min(int(u), n - 2);
+        return stored(k) + (stored(k + 1) - stored(k)) * (u - k);
+    }
+};
+
+TEST_F(LightVolume, AHomogeneousBlockHoldsExpMinusSigmaDAtItsTexelCentres)
+{
+    osg::ref_ptr<Volume> block = constantVolume(VoxelType::UInt8, {depthVoxels, depthVoxels, depthVoxels}, 100);
+    osg::ref_ptr<TransferFunction> tf = constantTransferFunction(osg::Vec4(0.9f, 0.6f, 0.3f, float(alpha)));
+    const osg::Vec4 unlit = renderOrthoFromPlusZ(lit(block.get(), tf.get(), "null").get(), 8, 8, 32.0).at(4, 4);
+    ASSERT_GT(unlit.r(), 0.1f);
+    const double exact = expectedRatio(0, [](int i) { return std::exp(-sigma * (i + 0.5) * step); });
+    for (const double scale : {1.0, 0.5, 0.25}) {
+        osg::ref_ptr<VolumeScene> scene = lit(block.get(), tf.get(), "light_volume", scale);
+        const osg::Vec4 shadowed = renderOrthoFromPlusZ(scene.get(), 8, 8, 32.0).at(4, 4);
+        ASSERT_NE(scene->compositionKeys()[0].find("Shadowing=light_volume"), std::string::npos) << scene->compositionKeys()[0];
+        const int n = int(std::lround(depthVoxels * scale));
+        const double ratio = expectedRatio(0, [&](int i) { return interpolated((i + 0.5) * step, n); });
+        // Half floats hold the transmittance to 2^-11 of itself, and each slice multiplies the
+        // rounded value of the one before: n roundings of up to 2^-12 relative (n = 16: 3.9e-3
+        // at worst; measured 1.2e-3).
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(shadowed[c] / unlit[c], ratio, 2.5e-3) << "scale " << scale << " channel " << c;
+        EXPECT_NEAR(shadowed.a(), unlit.a(), 1e-6) << "shadows change light, not coverage";
+        // Against the continuous exp(-sigma s) of shadow rays: linear interpolation of the
+        // exponential over texels of 1, 2 and 4 voxels (and the clamped half texels at the ends).
+        EXPECT_NEAR(ratio, exact, 0.02 / scale);
+        const std::vector<LightVolumeStatistics> stats = scene->lightVolumeStatistics();
+        ASSERT_EQ(stats.size(), 1u);
+        EXPECT_EQ(stats[0].dims, osg::Vec3i(n, n, n));
+        EXPECT_EQ(stats[0].channels, 1);
+        EXPECT_EQ(stats[0].bytes, std::size_t(n) * n * n * 2) << "R16F: 2 bytes per texel";
+        EXPECT_EQ(stats[0].builds, 1u);
+    }
+}
+
+TEST_F(LightVolume, ClippedAwayMaterialCastsNoShadow)
+{
+    osg::ref_ptr<Volume> block = constantVolume(VoxelType::UInt8, {depthVoxels, depthVoxels, depthVoxels}, 100);
+    osg::ref_ptr<TransferFunction> tf = constantTransferFunction(osg::Vec4(0.9f, 0.6f, 0.3f, float(alpha)));
+    auto clipped = [&](const char* shadowing) {
+        osg::ref_ptr<VolumeScene> scene = lit(block.get(), tf.get(), shadowing);
+        osg::ref_ptr<ClipPlaneNode> plane = new ClipPlaneNode;
+        plane->plane.set(0.0, 0.0, -1.0, 0.0);  // keeps z <= 0: the half nearest the light is gone
+        scene->addChild(plane.get());
+        return scene;
+    };
+    const osg::Vec4 unlit = renderOrthoFromPlusZ(clipped("null").get(), 8, 8, 32.0).at(4, 4);
+    const int half = int(depthVoxels / step) / 2;
+    // The build integrates each path at the view step: the plane cuts the texels' paths to within
+    // a step, so a texel d below the face holds exp(-sigma (d - 8)) below the cut.
+    const double ratio = expectedRatio(half, [&](int i) { return interpolated((i + 0.5) * step, depthVoxels, 8.0); });
+    osg::ref_ptr<VolumeScene> scene = clipped("light_volume");
+    const osg::Vec4 shadowed = renderOrthoFromPlusZ(scene.get(), 8, 8, 32.0).at(4, 4);
+    EXPECT_NE(scene->compositionKeys()[0].find("ClipPosition=[plane]"), std::string::npos) << scene->compositionKeys()[0];
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(shadowed[c] / unlit[c], ratio, 2e-3) << "channel " << c;
+    // With the clipped half casting its shadow the ratio would be exp(-8 sigma) times lower.
+    EXPECT_GT(ratio, 1.5 * ratio * std::exp(-sigma * 8.0));
+}
+
+/// A block of density 60 around a sphere of density 200 (16x24x20, anisotropic spacing), whose
+/// shadow falls across the block for oblique lights.
+osg::ref_ptr<Volume> sphereInBlock()
+{
+    osg::ref_ptr<Volume> volume = new Volume;
+    volume->allocate(VoxelType::UInt8, {16, 24, 20});
+    volume->setSpacing({1.0, 1.0, 1.25});
+    for (int z = 0; z < 20; ++z)
+        for (int y = 0; y < 24; ++y)
+            for (int x = 0; x < 16; ++x) {
+                const double r = std::hypot(x - 9.0, y - 14.0, 1.25 * (z - 12.0));
+                volume->data()[(std::size_t(z) * 24 + y) * 16 + x] = r < 6.0 ? 200 : 60;
+            }
+    volume->dirty();
+    return volume;
+}
+
+double rmse(const Pixels& a, const Pixels& b)
+{
+    double sum = 0.0;
+    for (std::size_t i = 0; i < a.rgba.size(); ++i)
+        for (int c = 0; c < 3; ++c) sum += double(a.rgba[i][c] - b.rgba[i][c]) * (a.rgba[i][c] - b.rgba[i][c]);
+    return std::sqrt(sum / (3.0 * a.rgba.size()));
+}
+
+TEST_F(LightVolume, ConvergesToShadowRaysAsItsResolutionGrows)
+{
+    osg::ref_ptr<Volume> volume = sphereInBlock();
+    osg::ref_ptr<TransferFunction> tf =
+        transferFunction({{0, {0, 0, 0, 0}}, {60, {0.9f, 0.8f, 0.6f, 0.05f}}, {200, {0.4f, 0.7f, 1.0f, 0.5f}}, {255, {1, 1, 1, 0.5f}}}, 0, 255);
+    for (const std::vector<osg::Vec4>& lights : std::vector<std::vector<osg::Vec4>>{
+             {{1, 0.6f, 0.8f, 0}}, {{-12, 10, 20, 1}}, {{0, 0, 1, 0}, {-1, 0, 0, 0}}}) {
+        const Pixels rays = renderOrthoFromPlusZ(lit(volume.get(), tf.get(), "ray", 1.0, lights).get(), 40, 40, 36.0);
+        const Pixels none = renderOrthoFromPlusZ(lit(volume.get(), tf.get(), "null", 1.0, lights).get(), 40, 40, 36.0);
+        std::vector<double> errors;
+        for (const double scale : {0.25, 0.5, 1.0})
+            errors.push_back(rmse(renderOrthoFromPlusZ(lit(volume.get(), tf.get(), "light_volume", scale, lights).get(), 40, 40, 36.0), rays));
+        const double shadowEffect = rmse(none, rays);
+        ::testing::Message lightText;
+        for (const osg::Vec4& l : lights) lightText << l.x() << "," << l.y() << "," << l.z() << "," << l.w() << " ";
+        EXPECT_GT(shadowEffect, 0.02) << "the shadows change the image: " << lightText;
+        EXPECT_LT(errors[1], errors[0]) << lightText;
+        EXPECT_LT(errors[2], errors[1]) << lightText;
+        EXPECT_LT(errors[2], 0.1 * shadowEffect) << "within a tenth of what shadows change: " << lightText;
+        std::printf("lights %s: shadow effect %.4f, light volume RMSE vs rays at 1/4, 1/2, 1: %.5f %.5f %.5f\n",
+                    lightText.GetString().c_str(), shadowEffect, errors[0], errors[1], errors[2]);
+    }
+}
+
+TEST_F(LightVolume, NoNaNForAxisDiagonalAndInsideLightsOrZeroGradients)
+{
+    osg::ref_ptr<Volume> block = constantVolume(VoxelType::UInt8, {depthVoxels, depthVoxels, depthVoxels}, 100);
+    osg::ref_ptr<TransferFunction> tf = constantTransferFunction(osg::Vec4(0.9f, 0.6f, 0.3f, float(alpha)));
+    const std::vector<osg::Vec4> lights = {{1, 0, 0, 0}, {0, -1, 0, 0}, {1, 1, 1, 0},  {-1, 1, -1, 0},
+                                           {0, 0, 0, 1}, {3, -2, 5, 1}, {0, 0, 100, 1}, {8, 8, 8, 1}};
+    for (const osg::Vec4& light : lights) {
+        const Pixels img = renderOrthoFromPlusZ(lit(block.get(), tf.get(), "light_volume", 0.5, {light}).get(), 16, 16, 32.0);
+        for (const osg::Vec4& p : img.rgba)
+            for (int c = 0; c < 4; ++c)
+                ASSERT_TRUE(std::isfinite(p[c]) && p[c] >= 0.0f && p[c] <= 1.0f)
+                    << "light " << light.x() << "," << light.y() << "," << light.z() << "," << light.w();
+    }
+    // A point light at the centre: the texels around it hold exp(-sigma * distance), so the
+    // centre pixel matches shadow rays closely.
+    const std::vector<osg::Vec4> centre = {{0, 0, 0, 1}};
+    const osg::Vec4 rays = renderOrthoFromPlusZ(lit(block.get(), tf.get(), "ray", 1.0, centre).get(), 8, 8, 32.0).at(4, 4);
+    const osg::Vec4 volume = renderOrthoFromPlusZ(lit(block.get(), tf.get(), "light_volume", 1.0, centre).get(), 8, 8, 32.0).at(4, 4);
+    ASSERT_GT(rays.r(), 0.0f);
+    EXPECT_NEAR(volume.r() / rays.r(), 1.0, 0.03);
+}
+
+TEST_F(LightVolume, IsRebuiltOnlyWhenTheLightTheTransferFunctionOrAClipChanges)
+{
+    osg::ref_ptr<Volume> volume = sphereInBlock();
+    osg::ref_ptr<TransferFunction> tf = transferFunction({{0, {0, 0, 0, 0}}, {60, {0.9f, 0.8f, 0.6f, 0.05f}}, {255, {1, 1, 1, 0.5f}}}, 0, 255);
+    osg::ref_ptr<VolumeScene> scene = lit(volume.get(), tf.get(), "light_volume", 0.5, {{1, 0.6f, 0.8f, 0}});
+    auto builds = [&] { return scene->lightVolumeStatistics().at(0).builds; };
+    const osg::Matrixd ortho = osg::Matrixd::ortho(-20, 20, -20, 20, 1, 200);
+    const osg::Matrixd top = osg::Matrixd::lookAt(osg::Vec3d(0, 0, 60), osg::Vec3d(), osg::Vec3d(0, 1, 0));
+    const osg::Matrixd oblique = osg::Matrixd::lookAt(osg::Vec3d(60, 10, 5), osg::Vec3d(), osg::Vec3d(0, 0, 1));
+    render(scene.get(), 16, 16, top, ortho);
+    EXPECT_EQ(builds(), 1u);
+    // The light is fixed in the scene: another view reads the same light volume.
+    const Pixels side = render(scene.get(), 16, 16, oblique, ortho);
+    EXPECT_EQ(builds(), 1u) << "a camera move rebuilds nothing";
+    tf->setPoint(255, {1, 1, 1, 0.4f});
+    render(scene.get(), 16, 16, oblique, ortho);
+    EXPECT_EQ(builds(), 2u) << "a TF edit rebuilds";
+    auto* source = dynamic_cast<osg::LightSource*>(scene->getChild(1));
+    source->getLight()->setPosition({-1, 0.6f, 0.8f, 0});
+    const Pixels moved = render(scene.get(), 16, 16, oblique, ortho);
+    EXPECT_EQ(builds(), 3u) << "a light move rebuilds";
+    EXPECT_GT(rmse(side, moved), 1e-3) << "and the shadows move";
+    osg::ref_ptr<ClipPlaneNode> plane = new ClipPlaneNode;
+    plane->plane.set(1.0, 0.0, 0.0, 0.0);
+    scene->addChild(plane.get());
+    render(scene.get(), 16, 16, oblique, ortho);
+    EXPECT_EQ(builds(), 4u) << "a clip shape rebuilds";
+    plane->plane.set(1.0, 0.0, 0.0, 2.0);
+    render(scene.get(), 16, 16, oblique, ortho);
+    EXPECT_EQ(builds(), 5u) << "moving it rebuilds";
+    render(scene.get(), 16, 16, top, ortho);
+    EXPECT_EQ(builds(), 5u);
+}
+
+}  // namespace
+}  // namespace volren::test
