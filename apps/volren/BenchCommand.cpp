@@ -18,6 +18,7 @@
 #include <volume_model/Requantise.h>
 
 #include <osg/GLExtensions>
+#include <osg/LightSource>
 #include <osgDB/FileNameUtils>
 #include <osgDB/FileUtils>
 
@@ -84,6 +85,8 @@ std::string lightingModel(const ReferenceScene& scene, bool lighting)
         const bool lit = lighting && !scene.lights.empty() && shading != placed.choice.end() && shading->second != "null";
         std::string model = lit ? "lit:" + placed.choice.at("Illumination") : std::string("unlit");
         if (lit && shading->second != "lighting") model += "/" + shading->second;  // another lit picture
+        const auto shadowing = placed.choice.find("Shadowing");  // every shadowing approximates exact shadows
+        if (lit && shadowing != placed.choice.end() && shadowing->second != "null") model += "+shadows";
         key += (key.empty() ? "" : "+") + model;
     }
     return key;
@@ -309,7 +312,48 @@ private:
         row.textureMb = double(_renderer.volumeScene()->textureBytes()) / (1024.0 * 1024.0);
         row.gpuMemoryMb = freeBefore >= 0.0 && freeAfter >= 0.0 ? freeBefore - freeAfter : -1.0;
         row.keys = _renderer.volumeScene()->compositionKeys();
+        measureLightMoves(row);
         return row;
+    }
+
+    /// Shadowed rows: the frame time while every light of the scene turns a little each frame (a
+    /// light volume rebuilds each time), and the light volumes' last build and bytes per voxel.
+    void measureLightMoves(BenchRow& row)
+    {
+        bool shadowed = false;
+        for (const std::string& key : row.keys)
+            shadowed = shadowed || (key.find("Shadowing=") != std::string::npos && key.find("Shadowing=null") == std::string::npos);
+        std::vector<osg::Light*> lights;
+        struct LightFinder : osg::NodeVisitor
+        {
+            LightFinder() : osg::NodeVisitor(TRAVERSE_ALL_CHILDREN) {}
+            void apply(osg::LightSource& source) override
+            {
+                if (source.getLight()) found.push_back(source.getLight());
+                traverse(source);
+            }
+            std::vector<osg::Light*> found;
+        } finder;
+        _scene->accept(finder);
+        lights = finder.found;
+        if (!shadowed || lights.empty()) return;
+        std::vector<osg::Vec4> original;
+        for (osg::Light* l : lights) original.push_back(l->getPosition());
+        std::vector<double> draw;
+        for (int f = 0; f < _options.frames; ++f) {
+            const osg::Matrix turn = osg::Matrix::rotate(osg::DegreesToRadians(2.0 * (f + 1)), osg::Vec3(0, 1, 0));
+            for (std::size_t i = 0; i < lights.size(); ++i) lights[i]->setPosition(original[i] * turn);
+            draw.push_back(_renderer.renderFrame().drawMs);
+        }
+        for (std::size_t i = 0; i < lights.size(); ++i) lights[i]->setPosition(original[i]);
+        row.lightMoveMs = median(draw);
+        std::size_t bytes = 0, voxels = 0;
+        for (const LightVolumeStatistics& s : _renderer.volumeScene()->lightVolumeStatistics()) {
+            bytes += s.bytes;
+            row.rebuildMs = std::max(row.rebuildMs, s.lastBuildSeconds * 1e3);
+        }
+        for (VolumeNode* n : _nodes) voxels += n->getVolume()->voxelCount();
+        if (bytes > 0 && voxels > 0) row.auxBytesPerVoxel = double(bytes) / double(voxels);
     }
 
     const BenchOptions& _options;

@@ -56,27 +56,29 @@ void writeMarkdown(const BenchReport& report, const std::string& path)
     std::ofstream md(path);
     md << "GL context: " << report.context << "  \n" << report.timingNote << ".\n\n";
     md << "| dataset | size | renderer | configuration | frame ms | GPU ms | CPU ms | textures MB | GPU memory MB | RMSE | "
-          "max error | PSNR dB | Pareto | beats default |\n";
-    md << "|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|:-:|:-:|\n";
+          "max error | PSNR dB | Pareto | beats default | light moving ms | rebuild ms | aux B/voxel |\n";
+    md << "|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|:-:|:-:|---:|---:|---:|\n";
     for (const BenchRow& r : report.rows)
         md << "| " << r.dataset << " | " << r.width << "x" << r.height << " | " << r.renderer
            << " | " << r.config << " | " << number(r.frameMs) << " | " << number(r.gpuMs) << " | " << number(r.cpuMs)
            << " | " << number(r.textureMb) << " | " << number(r.gpuMemoryMb) << " | " << number(r.error.rmse) << " | "
            << number(r.error.maxAbs) << " | " << number(r.error.psnr) << " | " << (r.pareto ? "yes" : "") << " | "
-           << (r.beatsDefault ? "yes" : "") << " |\n";
+           << (r.beatsDefault ? "yes" : "") << " | " << number(r.lightMoveMs) << " | " << number(r.rebuildMs) << " | "
+           << number(r.auxBytesPerVoxel) << " |\n";
 }
 
 void writeCsv(const BenchReport& report, const std::string& path)
 {
     std::ofstream csv(path);
     csv << "dataset,width,height,renderer,config,truth,frame_ms,gpu_ms,cpu_ms,texture_mb,gpu_memory_mb,rmse,max_abs,"
-           "psnr_db,pareto,beats_default\n";
+           "psnr_db,pareto,beats_default,light_move_ms,rebuild_ms,aux_bytes_per_voxel\n";
     auto quoted = [](const std::string& s) { return "\"" + s + "\""; };
     for (const BenchRow& r : report.rows)
         csv << quoted(r.dataset) << "," << r.width << "," << r.height << "," << quoted(r.renderer) << ","
             << quoted(r.config) << "," << quoted(r.truth) << "," << r.frameMs << "," << r.gpuMs << "," << r.cpuMs << ","
             << r.textureMb << "," << r.gpuMemoryMb << "," << r.error.rmse << "," << r.error.maxAbs << "," << r.error.psnr
-            << "," << (r.pareto ? 1 : 0) << "," << (r.beatsDefault ? 1 : 0) << "\n";
+            << "," << (r.pareto ? 1 : 0) << "," << (r.beatsDefault ? 1 : 0) << "," << r.lightMoveMs << "," << r.rebuildMs
+            << "," << r.auxBytesPerVoxel << "\n";
 }
 
 void writeJson(const BenchReport& report, const std::string& path)
@@ -87,7 +89,9 @@ void writeJson(const BenchReport& report, const std::string& path)
                         {"config", r.config}, {"truth", r.truth}, {"frame_ms", r.frameMs}, {"gpu_ms", r.gpuMs},
                         {"cpu_ms", r.cpuMs}, {"texture_mb", r.textureMb}, {"gpu_memory_mb", r.gpuMemoryMb},
                         {"rmse", r.error.rmse}, {"max_abs", r.error.maxAbs}, {"psnr_db", r.error.psnr},
-                        {"pareto", r.pareto}, {"beats_default", r.beatsDefault}, {"composition_keys", r.keys}});
+                        {"pareto", r.pareto}, {"beats_default", r.beatsDefault}, {"composition_keys", r.keys},
+                        {"light_move_ms", r.lightMoveMs}, {"rebuild_ms", r.rebuildMs},
+                        {"aux_bytes_per_voxel", r.auxBytesPerVoxel}});
     nlohmann::json doc = {{"context", report.context}, {"timing_note", report.timingNote}, {"rows", rows}};
     std::ofstream(path) << doc.dump(2) << "\n";
 }

@@ -33,6 +33,10 @@ struct BenchRow
     double frameNoiseMs = 0.0;  ///< median absolute deviation of the frame times
     double textureMb = -1.0;    ///< GL texture storage volren allocated
     double gpuMemoryMb = -1.0;  ///< drop of the driver's free video memory (NVIDIA), -1 unknown
+    /// Shadowed rows: median frame time while the light moves every frame (-1: not measured).
+    double lightMoveMs = -1.0;
+    /// Light volumes: time of their last build, and their bytes per voxel of the volumes (-1: none).
+    double rebuildMs = -1.0, auxBytesPerVoxel = -1.0;
     ImageError error;
     std::vector<std::string> keys;  ///< composition keys drawn
     bool pareto = false;            ///< on the speed/accuracy Pareto front of its dataset and size

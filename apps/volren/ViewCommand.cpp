@@ -4,6 +4,7 @@
 
 #include <volume_gui/ImGuiOverlay.h>
 #include <volume_gui/InteractionQuality.h>
+#include <volume_gui/LightDrag.h>
 #include <volume_gui/RenderSettingsPanel.h>
 #include <volume_gui/TransferFunctionEditor.h>
 #include <volume_renderer/ShaderFunctionRegistry.h>
@@ -102,7 +103,7 @@ int viewCommand(const std::vector<std::string>& args)
         editor = std::make_unique<TransferFunctionEditor>(const_cast<TransferFunction*>(node->getTransferFunction()),
                                                           node->getVolume());
         std::map<std::string, std::vector<std::string>> choices;
-        for (const char* slot : {"RayTraversal", "Reconstruction", "Gradient", "Illumination", "Acceleration"})
+        for (const char* slot : {"RayTraversal", "Reconstruction", "Gradient", "Illumination", "Shadowing", "Acceleration"})
             choices[slot] = root->policy().choosable(slot);  // default first
         panel = std::make_unique<RenderSettingsPanel>(node, choices);
         overlay = new ImGuiOverlay([&editor, &panel, scene = root.get()] {
@@ -112,7 +113,7 @@ int viewCommand(const std::vector<std::string>& args)
             panel->draw();
             ImGui::SetNextWindowPos(ImVec2(10, ImGui::GetIO().DisplaySize.y - 40), ImGuiCond_Always);
             ImGui::Begin("frame", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize);
-            ImGui::Text("%.1f ms/frame   e: editor  c: screenshot  s: stats  Esc: quit",
+            ImGui::Text("%.1f ms/frame   e: editor  Ctrl+drag: light  c: screenshot  s: stats  Esc: quit",
                         1000.0f / std::max(ImGui::GetIO().Framerate, 1e-3f));
             if (const std::size_t pending = scene->pendingBricks())  // detail streaming in
                 ImGui::Text("loading detail: %zu bricks to go", pending);
@@ -123,6 +124,7 @@ int viewCommand(const std::vector<std::string>& args)
         viewer.addEventHandler(new EditorToggle(overlay->node()));
         viewer.addEventHandler(new InteractionQuality(node));
     }
+    viewer.addEventHandler(new LightDrag(root.get(), viewer.getCamera()));  // Ctrl + drag turns the lights
     // Home (the space bar) is the framed view volren render would take, not OSG's bounding sphere.
     osg::ref_ptr<Trackball> trackball = new Trackball;
     {
@@ -158,7 +160,8 @@ int viewCommand(const std::vector<std::string>& args)
         std::cout << "volren view: wrote " << options.screenshot << std::endl;
         return 0;
     }
-    std::cout << "volren view: drag to turn, e: transfer-function editor, s: frame times, c: screenshot, Esc quits"
+    std::cout << "volren view: drag to turn, Ctrl+drag to turn the lights, e: transfer-function editor, s: frame times, "
+                 "c: screenshot, Esc quits"
               << std::endl;
     return viewer.run();
 }

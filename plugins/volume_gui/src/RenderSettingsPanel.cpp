@@ -20,12 +20,13 @@ void RenderSettingsPanel::apply(const std::string& key, const std::string& value
 
 void RenderSettingsPanel::draw()
 {
-    ImGui::SetNextWindowSize(ImVec2(400, 330), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(400, 420), ImGuiCond_FirstUseEver);
     ImGui::Begin("Volume settings");
     const std::pair<const char*, const char*> slots[] = {{"traversal", "RayTraversal"},
                                                          {"reconstruction", "Reconstruction"},
                                                          {"gradient", "Gradient"},
                                                          {"illumination", "Illumination"},
+                                                         {"shadowing", "Shadowing"},
                                                          {"acceleration", "Acceleration"}};
     for (const auto& [key, slot] : slots) {
         const std::string current = _node->settings.get(key);
@@ -48,6 +49,18 @@ void RenderSettingsPanel::draw()
         v << stop;
         apply("earlyTermination", v.str());
     }
+    // Shadows and scattering (Ctrl + drag in the view turns the lights).
+    auto slider = [this](const char* label, const char* key, double value, float lo, float hi, bool logarithmic) {
+        float v = float(value);
+        if (ImGui::SliderFloat(label, &v, lo, hi, "%.3f", logarithmic ? ImGuiSliderFlags_Logarithmic : 0)) {
+            std::ostringstream text;
+            text << v;
+            apply(key, text.str());
+        }
+    };
+    slider("shadow step factor", "shadowStepFactor", _node->settings.shadowStepFactor, 0.25f, 8.0f, true);
+    slider("light volume scale", "lightVolumeScale", _node->settings.lightVolumeScale, 0.1f, 1.0f, false);
+    slider("anisotropy g", "anisotropy", _node->settings.anisotropy, -0.9f, 0.9f, false);
     int cell = _node->settings.macrocellSize;
     if (ImGui::SliderInt("macrocell size", &cell, 1, 64, "%d voxels", ImGuiSliderFlags_Logarithmic))
         apply("macrocellSize", std::to_string(cell));

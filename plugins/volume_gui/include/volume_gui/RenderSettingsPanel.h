@@ -8,14 +8,16 @@
 namespace volren {
 
 /// The settings of one VolumeNode as an ImGui window ("Volume settings"): traversal,
-/// reconstruction, gradient and illumination (from the implementation names the caller offers,
-/// e.g. the renderer's registry), sample rate, early termination, and clipping on or off. Every
+/// reconstruction, gradient, illumination, shadowing and acceleration (from the implementation
+/// names the caller offers, e.g. the renderer's registry), sample rate, early termination, the
+/// shadow step factor, light volume scale and scattering anisotropy, and clipping on or off. Every
 /// change goes through RenderSettings::set, so it is validated like `--set`; the renderer picks
 /// it up in the next frame.
 class RenderSettingsPanel
 {
 public:
-    /// `choices`: slot ("RayTraversal", "Reconstruction", "Gradient", "Illumination") -> names.
+    /// `choices`: slot ("RayTraversal", "Reconstruction", "Gradient", "Illumination", "Shadowing",
+    /// "Acceleration") -> names.
     RenderSettingsPanel(VolumeNode* node, std::map<std::string, std::vector<std::string>> choices);
     /// Draws the window into the current ImGui frame and applies this frame's changes.
     void draw();
