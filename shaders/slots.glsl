@@ -32,6 +32,8 @@ vec3 volren_illuminate(vec3 normal, vec3 viewDir, vec3 lightDir, vec3 albedo);
 // reaches pos; the light is lightDistance world units away along lightDir (1e30 for directional
 // lights).
 float volren_shadow(vec3 pos, vec3 lightDir, float lightDistance, int light);
+// And the fraction of the ambient light reaching pos around the unit normal (1: unoccluded).
+float volren_occlusion(vec3 pos, vec3 normal);
 
 // Shading: emitted colour of a classified sample seen along viewDir (towards the eye).
 vec3 volren_shade(vec3 pos, vec3 viewDir, vec4 classified);

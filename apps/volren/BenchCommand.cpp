@@ -348,7 +348,7 @@ private:
         for (std::size_t i = 0; i < lights.size(); ++i) lights[i]->setPosition(original[i]);
         row.lightMoveMs = median(draw);
         std::size_t bytes = 0, voxels = 0;
-        for (const LightVolumeStatistics& s : _renderer.volumeScene()->lightVolumeStatistics()) {
+        for (const BuiltVolumeStatistics& s : _renderer.volumeScene()->builtVolumeStatistics()) {
             bytes += s.bytes;
             row.rebuildMs = std::max(row.rebuildMs, s.lastBuildSeconds * 1e3);
         }

@@ -90,15 +90,16 @@ int renderCommand(const std::vector<std::string>& args, bool defaultRun)
                               {"budget_bytes", b.budgetBytes},
                               {"source_ram_bytes", b.sourceBytes}});
         stats["bricked_volumes"] = bricks;
-        nlohmann::json lightVolumes = nlohmann::json::array();  // shadowing=light_volume
-        for (const LightVolumeStatistics& l : renderer.volumeScene()->lightVolumeStatistics())
-            lightVolumes.push_back({{"volume", l.node},
+        nlohmann::json built = nlohmann::json::array();  // shadowing=light_volume, cone, cone_ao
+        for (const BuiltVolumeStatistics& l : renderer.volumeScene()->builtVolumeStatistics())
+            built.push_back({{"volume", l.node},
+                                    {"kind", l.kind},
                                     {"dims", {l.dims.x(), l.dims.y(), l.dims.z()}},
                                     {"channels", l.channels},
                                     {"bytes", l.bytes},
                                     {"builds", l.builds},
                                     {"last_build_ms", l.lastBuildSeconds * 1e3}});
-        stats["light_volumes"] = lightVolumes;
+        stats["built_volumes"] = built;
         stats["streamed_frames"] = streamed.size();  // frames after --frames until the bricks converged
         stats["streamed_ms"] = streamMs;
         std::vector<double> cpu, draw, gpu;

@@ -43,6 +43,11 @@ const std::vector<std::pair<std::string, double RenderSettings::*>>& exactNumber
         {"shadowStepFactor", &RenderSettings::shadowStepFactor},
         {"shadowCutoff", &RenderSettings::shadowCutoff},
         {"lightVolumeScale", &RenderSettings::lightVolumeScale},
+        {"coneAngle", &RenderSettings::coneAngle},
+        {"coneStart", &RenderSettings::coneStart},
+        {"coneStepGrowth", &RenderSettings::coneStepGrowth},
+        {"coneFilterSigma", &RenderSettings::coneFilterSigma},
+        {"aoDistance", &RenderSettings::aoDistance},
         {"anisotropy", &RenderSettings::anisotropy}};
     return fields;
 }

@@ -8,3 +8,9 @@ float volren_shadow(vec3 pos, vec3 lightDir, float lightDistance, int light)
     if (light > 3) return 1.0;
     return clamp(texture(volren_lightVolume, pos)[light], 0.0, 1.0);
 }
+
+// No ambient occlusion.
+float volren_occlusion(vec3 pos, vec3 normal)
+{
+    return 1.0;
+}

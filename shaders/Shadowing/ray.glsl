@@ -28,3 +28,9 @@ float volren_shadow(vec3 pos, vec3 lightDir, float lightDistance, int light)
     }
     return exp(-depth);
 }
+
+// No ambient occlusion.
+float volren_occlusion(vec3 pos, vec3 normal)
+{
+    return 1.0;
+}

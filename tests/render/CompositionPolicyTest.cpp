@@ -249,7 +249,8 @@ std::set<std::string> calledSlots(std::string text)
     std::set<std::string> called;
     // Slots with a second function besides SlotInfo::function (slots.glsl).
     std::vector<std::pair<std::string, std::string>> functions = {{"VolumeStorage", "volren_volumeTexel"},
-                                                                  {"Acceleration", "volren_stepsPerSample"}};
+                                                                  {"Acceleration", "volren_stepsPerSample"},
+                                                                  {"Shadowing", "volren_occlusion"}};
     for (const SlotInfo& s : slots())
         if (!s.function.empty()) functions.emplace_back(s.name, s.function);
     for (const auto& [slot, function] : functions) {

@@ -1,4 +1,7 @@
-// Shadowing/light_volume against closed forms and against shadow rays. In a homogeneous block lit
+// The Shadowing implementations that build auxiliary volumes on the GPU, against closed forms
+// and against shadow rays: light_volume, and cone / cone_ao (cone tracing).
+//
+// Shadowing/light_volume. In a homogeneous block lit
 // along an axis, the build is exact at the light volume's texel centres: a texel d voxels below
 // the lit face holds exp(-sigma * d) (the path to the face is integrated exactly, the slices'
 // bilinear gathers read a constant slice). A sample between texel centres reads the trilinear
@@ -101,7 +104,7 @@ TEST_F(LightVolume, AHomogeneousBlockHoldsExpMinusSigmaDAtItsTexelCentres)
         // Against the continuous exp(-sigma s) of shadow rays: linear interpolation of the
         // exponential over texels of 1, 2 and 4 voxels (and the clamped half texels at the ends).
         EXPECT_NEAR(ratio, exact, 0.02 / scale);
-        const std::vector<LightVolumeStatistics> stats = scene->lightVolumeStatistics();
+        const std::vector<BuiltVolumeStatistics> stats = scene->builtVolumeStatistics();
         ASSERT_EQ(stats.size(), 1u);
         EXPECT_EQ(stats[0].dims, osg::Vec3i(n, n, n));
         EXPECT_EQ(stats[0].channels, 1);
@@ -210,7 +213,7 @@ TEST_F(LightVolume, IsRebuiltOnlyWhenTheLightTheTransferFunctionOrAClipChanges)
     osg::ref_ptr<Volume> volume = sphereInBlock();
     osg::ref_ptr<TransferFunction> tf = transferFunction({{0, {0, 0, 0, 0}}, {60, {0.9f, 0.8f, 0.6f, 0.05f}}, {255, {1, 1, 1, 0.5f}}}, 0, 255);
     osg::ref_ptr<VolumeScene> scene = lit(volume.get(), tf.get(), "light_volume", 0.5, {{1, 0.6f, 0.8f, 0}});
-    auto builds = [&] { return scene->lightVolumeStatistics().at(0).builds; };
+    auto builds = [&] { return scene->builtVolumeStatistics().at(0).builds; };
     const osg::Matrixd ortho = osg::Matrixd::ortho(-20, 20, -20, 20, 1, 200);
     const osg::Matrixd top = osg::Matrixd::lookAt(osg::Vec3d(0, 0, 60), osg::Vec3d(), osg::Vec3d(0, 1, 0));
     const osg::Matrixd oblique = osg::Matrixd::lookAt(osg::Vec3d(60, 10, 5), osg::Vec3d(), osg::Vec3d(0, 0, 1));
@@ -237,6 +240,111 @@ TEST_F(LightVolume, IsRebuiltOnlyWhenTheLightTheTransferFunctionOrAClipChanges)
     EXPECT_EQ(builds(), 5u) << "moving it rebuilds";
     render(scene.get(), 16, 16, top, ortho);
     EXPECT_EQ(builds(), 5u);
+}
+
+
+/// The optical depth, in units of sigma, from the front face of the block down to `depth`
+/// voxels through the opacity chain's finest level: sigma below half a voxel, falling linearly
+/// to sigma/2 at the face (its texels blend with the zero border there).
+double chainDepth(double depth)
+{
+    // The march from the sample upwards in steps of `step`, the last one cut at the face; each
+    // sampled at its midpoint (as the shader does).
+    auto field = [](double d) { return d >= 0.5 ? 1.0 : 0.5 + d; };
+    double total = 0.0;
+    for (double t = 0.0; t < depth - 1e-12;) {
+        const double h = std::min(step, depth - t);
+        total += field(depth - (t + 0.5 * h)) * h;
+        t += h;
+    }
+    return total;
+}
+
+TEST_F(LightVolume, ANarrowConeIsAShadowRayThroughTheExtinctionField)
+{
+    osg::ref_ptr<Volume> block = constantVolume(VoxelType::UInt8, {depthVoxels, depthVoxels, depthVoxels}, 100);
+    osg::ref_ptr<TransferFunction> tf = constantTransferFunction(osg::Vec4(0.9f, 0.6f, 0.3f, float(alpha)));
+    const osg::Vec4 unlit = renderOrthoFromPlusZ(lit(block.get(), tf.get(), "null").get(), 8, 8, 32.0).at(4, 4);
+    for (const char* method : {"cone", "cone_ao"}) {
+        osg::ref_ptr<VolumeScene> scene = lit(block.get(), tf.get(), method);
+        VolumeNode* node = findVolumeNodes(*scene)[0];
+        node->settings.coneAngle = 0.5;  // one voxel wide for 115 voxels: level 0 all the way
+        node->settings.coneStart = 0.0;
+        node->settings.ambient = 0.0;    // no ambient term for cone_ao's occlusion to scale
+        const osg::Vec4 shadowed = renderOrthoFromPlusZ(scene.get(), 8, 8, 32.0).at(4, 4);
+        ASSERT_NE(scene->compositionKeys()[0].find(std::string("Shadowing=") + method), std::string::npos);
+        // Steps of half a voxel from the sample: midpoints of a field linear within each.
+        const double ratio = expectedRatio(0, [](int i) { return std::exp(-sigma * chainDepth((i + 0.5) * step)); });
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(shadowed[c] / unlit[c], ratio, 1e-3) << method << " channel " << c;
+        const std::vector<BuiltVolumeStatistics> stats = scene->builtVolumeStatistics();
+        ASSERT_EQ(stats.size(), 1u);
+        EXPECT_EQ(stats[0].kind, "opacity mip chain");
+        EXPECT_EQ(stats[0].dims, osg::Vec3i(depthVoxels, depthVoxels, depthVoxels));
+        // Half floats, every level: 16^3 + 8^3 + ... + 1 texels of 2 bytes.
+        EXPECT_EQ(stats[0].bytes, std::size_t(2 * (4096 + 512 + 64 + 8 + 1)));
+    }
+}
+
+TEST_F(LightVolume, AmbientOcclusionDeepInAHomogeneousMediumIsExpMinusSigmaTimesItsReach)
+{
+    // A 64^3 block as opaque everywhere, emitting only in the layer 20-21 voxels below the face
+    // the viewer (and the normal) look at. Lit by ambient light only (a black light), the layer
+    // shows the ambient term times its occlusion; every cone over its hemisphere (8 voxels long,
+    // at most 4.6 wide) samples levels whose texels lie inside the block, where they average a
+    // constant: the occlusion is exp(-sigma (8 - 0.5)) (cones start half a voxel out).
+    const int n = 64;
+    osg::ref_ptr<Volume> volume = new Volume;
+    volume->allocate(VoxelType::UInt8, {n, n, n});
+    for (int z = 0; z < n; ++z)
+        std::fill_n(volume->data() + std::size_t(z) * n * n, std::size_t(n) * n, z == n - 21 ? 200 : 100);
+    volume->dirty();
+    // Black up to 150 (the lookup table's entries near 100 hold no colour at all), white at 200.
+    osg::ref_ptr<TransferFunction> tf = transferFunction({{150, {0, 0, 0, float(alpha)}}, {200, {1, 1, 1, float(alpha)}}}, 0, 255);
+    auto image = [&](const char* method) {
+        osg::ref_ptr<VolumeScene> scene = lit(volume.get(), tf.get(), method);
+        VolumeNode* node = findVolumeNodes(*scene)[0];
+        node->settings.ambient = 0.5;
+        dynamic_cast<osg::LightSource*>(scene->getChild(1))->getLight()->setDiffuse({0, 0, 0, 1});
+        return renderOrthoFromPlusZ(scene.get(), 8, 8, 128.0).at(4, 4);
+    };
+    const osg::Vec4 open = image("cone"), occluded = image("cone_ao");
+    ASSERT_GT(open.r(), 1e-4f);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(occluded[c] / open[c], std::exp(-sigma * 7.5), 2e-3) << "channel " << c;
+}
+
+TEST_F(LightVolume, ConeTracingFollowsShadowRaysAndRebuildsOnlyForTheTransferFunction)
+{
+    osg::ref_ptr<Volume> volume = sphereInBlock();
+    osg::ref_ptr<TransferFunction> tf =
+        transferFunction({{0, {0, 0, 0, 0}}, {60, {0.9f, 0.8f, 0.6f, 0.05f}}, {200, {0.4f, 0.7f, 1.0f, 0.5f}}, {255, {1, 1, 1, 0.5f}}}, 0, 255);
+    const std::vector<osg::Vec4> lights = {{1, 0.6f, 0.8f, 0}};
+    const Pixels rays = renderOrthoFromPlusZ(lit(volume.get(), tf.get(), "ray", 1.0, lights).get(), 40, 40, 36.0);
+    const Pixels none = renderOrthoFromPlusZ(lit(volume.get(), tf.get(), "null", 1.0, lights).get(), 40, 40, 36.0);
+    std::vector<double> errors;
+    for (const double angle : {30.0, 10.0, 1.0}) {
+        osg::ref_ptr<VolumeScene> scene = lit(volume.get(), tf.get(), "cone", 1.0, lights);
+        findVolumeNodes(*scene)[0]->settings.coneAngle = angle;
+        findVolumeNodes(*scene)[0]->settings.coneStart = 0.0;
+        errors.push_back(rmse(renderOrthoFromPlusZ(scene.get(), 40, 40, 36.0), rays));
+    }
+    std::printf("shadow effect %.4f, cone RMSE vs rays at 30, 10, 1 degrees: %.5f %.5f %.5f\n", rmse(none, rays), errors[0],
+                errors[1], errors[2]);
+    EXPECT_LT(errors[1], errors[0]);
+    EXPECT_LE(errors[2], errors[1]);
+    EXPECT_LT(errors[2], 0.25 * rmse(none, rays)) << "a narrow cone differs from a ray by the interpolated extinction only";
+
+    osg::ref_ptr<VolumeScene> scene = lit(volume.get(), tf.get(), "cone_ao", 1.0, lights);
+    auto builds = [&] { return scene->builtVolumeStatistics().at(0).builds; };
+    for (const osg::Vec4& light : std::vector<osg::Vec4>{{1, 0.6f, 0.8f, 0}, {-1, 0, 0, 0}, {0, 0, 30, 1}}) {
+        dynamic_cast<osg::LightSource*>(scene->getChild(1))->getLight()->setPosition(light);
+        const Pixels img = renderOrthoFromPlusZ(scene.get(), 16, 16, 36.0);
+        for (const osg::Vec4& p : img.rgba)
+            for (int c = 0; c < 4; ++c) ASSERT_TRUE(std::isfinite(p[c]) && p[c] >= 0.0f && p[c] <= 1.0f);
+    }
+    EXPECT_EQ(builds(), 1u) << "the chain does not depend on the lights";
+    tf->setPoint(255, {1, 1, 1, 0.4f});
+    renderOrthoFromPlusZ(scene.get(), 16, 16, 36.0);
+    EXPECT_EQ(builds(), 2u) << "a TF edit rebuilds it";
 }
 
 }  // namespace

@@ -72,7 +72,9 @@ bool RenderSettings::operator==(const RenderSettings& o) const
            debugView == o.debugView && macrocellSize == o.macrocellSize &&
            same(adaptiveTolerance, o.adaptiveTolerance) && adaptiveSteps == o.adaptiveSteps && lod == o.lod &&
            same(shadowStepFactor, o.shadowStepFactor) && same(shadowCutoff, o.shadowCutoff) &&
-           same(lightVolumeScale, o.lightVolumeScale) &&
+           same(lightVolumeScale, o.lightVolumeScale) && same(coneAngle, o.coneAngle) && same(coneStart, o.coneStart) &&
+           same(coneStepGrowth, o.coneStepGrowth) && same(coneFilterSigma, o.coneFilterSigma) &&
+           same(aoDistance, o.aoDistance) &&
            same(anisotropy, o.anisotropy) &&
            memoryBudgetMB == o.memoryBudgetMB && brickSize == o.brickSize && lodByDistance == o.lodByDistance && texturePrecision == o.texturePrecision &&
            functions == o.functions && forceNull == o.forceNull;
@@ -100,6 +102,11 @@ std::vector<std::pair<std::string, std::string>> RenderSettings::keys()
         {"shadowStepFactor", "shadow rays (shadowing=ray): their step as a factor of the view ray's (> 0)"},
         {"shadowCutoff", "shadow rays stop once the light's transmittance falls below this (0 = never; default 1/512)"},
         {"lightVolumeScale", "light volume (shadowing=light_volume): its resolution as a fraction of the volume's per axis (0-1]"},
+        {"coneAngle", "cone tracing (shadowing=cone, cone_ao): the shadow cones' aperture in degrees (0-120]"},
+        {"coneStart", "cone tracing: where cones start, in voxels from the sample (0-16)"},
+        {"coneStepGrowth", "cone tracing: step as a fraction of the cone's diameter (0.05-4)"},
+        {"coneFilterSigma", "cone tracing: Gaussian pre-filter of the opacity volume, sigma in voxels (0 = none, up to 4)"},
+        {"aoDistance", "ambient occlusion (shadowing=cone_ao): reach of its cones in voxels (0-256]"},
         {"lod", "level of detail: mip level the volume is sampled from, the step growing as 2^lod (0-16)"},
         {"lodByDistance", "level of detail by distance: the level rises where a pixel covers more than a voxel (on/off)"},
         {"memoryBudgetMB", "GPU memory for one volume's voxels in MiB (0 = auto: half of what the GPU reports, else 2048); larger volumes are bricked"},
@@ -137,6 +144,11 @@ std::string RenderSettings::get(const std::string& key) const
     if (k == "shadowstepfactor") return number(shadowStepFactor);
     if (k == "shadowcutoff") return number(shadowCutoff);
     if (k == "lightvolumescale") return number(lightVolumeScale);
+    if (k == "coneangle") return number(coneAngle);
+    if (k == "conestart") return number(coneStart);
+    if (k == "conestepgrowth") return number(coneStepGrowth);
+    if (k == "conefiltersigma") return number(coneFilterSigma);
+    if (k == "aodistance") return number(aoDistance);
     if (k == "lod") return std::to_string(lod);
     if (k == "memorybudgetmb") return std::to_string(memoryBudgetMB);
     if (k == "bricksize") return std::to_string(brickSize);
@@ -203,6 +215,11 @@ bool RenderSettings::set(const std::string& key, const std::string& value, std::
         {"anisotropy", &anisotropy, -0.99, 0.99, false},
         {"shadowcutoff", &shadowCutoff, 0.0, 1.0, false},
         {"lightvolumescale", &lightVolumeScale, 0.0, 1.0, true},
+        {"coneangle", &coneAngle, 0.0, 120.0, true},
+        {"conestart", &coneStart, 0.0, 16.0, false},
+        {"conestepgrowth", &coneStepGrowth, 0.05, 4.0, false},
+        {"conefiltersigma", &coneFilterSigma, 0.0, 4.0, false},
+        {"aodistance", &aoDistance, 0.0, 256.0, true},
     };
     double v = 0.0;
     if (k == "samplerate") {

@@ -114,7 +114,7 @@ void setShading(Medium& m, const ReferenceScene::Placed& placed, bool lit)
     } else {
         const std::string shadowing = decided || lit ? choiceOf(placed, s, "Shadowing") : "null";
         if (shadowing == "null") m.shadows = ReferenceScene::Shadows::None;
-        else if (shadowing == "ray" || shadowing == "light_volume") m.shadows = ReferenceScene::Shadows::Exact;
+        else if (shadowing == "ray" || shadowing == "light_volume" || shadowing == "cone") m.shadows = ReferenceScene::Shadows::Exact;
         else
             throw std::invalid_argument("reference: no model for Shadowing '" + shadowing + "' (volume '" +
                                         node.getName() + "'; Placed::shadows may say which it approximates)");

@@ -38,6 +38,17 @@ struct RenderSettings
     /// Propagated light volume (Shadowing light_volume): its resolution as a fraction of the
     /// volume's along each axis (0, 1].
     double lightVolumeScale = 0.5;
+    /// Cone tracing (Shadowing cone, cone_ao): the shadow cones' full aperture in degrees.
+    double coneAngle = 10.0;
+    /// Cone tracing: where the cones start, in voxels from the sample (its own neighbourhood
+    /// casts no shadow on it).
+    double coneStart = 0.5;
+    /// Cone tracing: each step is this times the cone's diameter there (at least the shadow step).
+    double coneStepGrowth = 0.5;
+    /// Cone tracing: the Gaussian pre-filter of the opacity volume, its sigma in voxels (0: none).
+    double coneFilterSigma = 0.0;
+    /// Ambient occlusion (Shadowing cone_ao): how far its cones reach, in voxels.
+    double aoDistance = 8.0;
     /// Level of detail: the volume is sampled from this level of its mip chain (0 = full
     /// resolution, each level half the voxels along each axis) with a step 2^lod times as long.
     int lod = 0;

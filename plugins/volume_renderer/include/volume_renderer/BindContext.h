@@ -38,6 +38,10 @@ struct RenderSettings;
 /// - LightVolume: per node, each light's transmittance (one half-float channel per light, up to
 ///   four) over the volume's box at lightVolumeScale of its resolution, built on the GPU by the
 ///   implementation's build program (ShaderFunction::buildFile) when what it depends on changes.
+/// - OpacityMipChain: per node, the classified extinction (per world unit) at every voxel of the
+///   sampled level, as a half-float 3D texture with a full mip chain (box-filtered on the GPU,
+///   zero outside the box), built by the implementation's build program when the TF, the volume
+///   or a clip shape changes (cone tracing).
 enum class AuxData
 {
     VolumeTexture,
@@ -50,7 +54,8 @@ enum class AuxData
     MacrocellRanges,
     HomogeneityGrid,
     BrickPool,
-    LightVolume
+    LightVolume,
+    OpacityMipChain
 };
 
 struct BrickedVolume;

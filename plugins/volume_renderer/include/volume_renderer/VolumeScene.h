@@ -1,7 +1,7 @@
 #pragma once
 #include <volume_renderer/BrickPool.h>
 #include <volume_renderer/CompositionPolicy.h>
-#include <volume_renderer/LightVolumeStatistics.h>
+#include <volume_renderer/BuiltVolumeStatistics.h>
 #include <volume_renderer/PassSettings.h>
 #include <volume_renderer/ShaderCompositor.h>
 
@@ -64,8 +64,9 @@ public:
     std::size_t hiddenVolumeCount() const;
     /// What each bricked volume the last cull traversal drew holds in its pool.
     std::vector<BrickStatistics> brickStatistics() const;
-    /// Statistics of the light volumes (Shadowing light_volume) the last cull used.
-    std::vector<LightVolumeStatistics> lightVolumeStatistics() const;
+    /// Statistics of the auxiliary volumes built on the GPU (light volumes, opacity mip chains)
+    /// the last cull used.
+    std::vector<BuiltVolumeStatistics> builtVolumeStatistics() const;
     /// Bricks the last cull traversal planned that are not in their pools yet (pass.streamBricks).
     std::size_t pendingBricks() const;
     /// Waits up to `seconds` for the brick loaders of the last cull traversal's volumes.

@@ -1,5 +1,8 @@
 #include "ProgramBinder.h"
 
+#include "../resources/LightVolume.h"
+#include "../resources/OpacityMipChain.h"
+
 #include <volume_renderer/GraphicsDriver.h>
 #include <volume_renderer/SampleDistance.h>
 
@@ -102,10 +105,11 @@ std::optional<BrickHidingRule> hidingFor(const BindContext& context, const std::
                            .mayShow = classification->mayShow(context)};
 }
 
-/// Everything a light volume's build reads, as text: the values of the uniforms and the textures
+/// Everything a built volume's build reads, as text: the values of the uniforms and the textures
 /// of the implementations its program composes (storage, reconstruction, classification, clip
-/// shapes, shadowing), the volume's and the TF's identity and modified counts, the lights.
-std::string lightVolumeKey(const BindContext& context, const std::vector<const Binding*>& bindings)
+/// shapes, shadowing), the volume's and the TF's identity and modified counts, and the lights
+/// when `lights` (a light volume; an opacity mip chain does not depend on them).
+std::string builtVolumeKey(const BindContext& context, const std::vector<const Binding*>& bindings, bool lights)
 {
     static const std::set<std::string> read = {"VolumeStorage", "Reconstruction", "Classification", "ClipPosition",
                                                "Shadowing"};
@@ -119,14 +123,15 @@ std::string lightVolumeKey(const BindContext& context, const std::vector<const B
     };
     if (context.bricks && context.bricks->pageTable->getImage())  // bricks became resident
         key << " pages " << context.bricks->pageTable->getImage()->getModifiedCount();
-    for (const LightInfo& light : context.lights)
-        for (int i = 0; i < 4; ++i) put(light.position[i]);
+    if (lights)
+        for (const LightInfo& light : context.lights)
+            for (int i = 0; i < 4; ++i) put(light.position[i]);
     for (const Binding* b : bindings) {
         if (!read.count(b->function->slot)) continue;
         for (const UniformDecl& u : b->function->uniforms) {
             const std::string name = (u.shared ? u.name : u.name + b->suffix) + b->memberSuffix;
             const osg::Uniform* uniform = context.stateSet.getUniform(name);
-            if (!uniform) continue;
+            if (!uniform || (!lights && name.rfind("volren_light", 0) == 0)) continue;
             key << ' ' << name;
             if (const osg::FloatArray* a = uniform->getFloatArray())
                 for (float v : *a) put(v);
@@ -140,7 +145,9 @@ std::string lightVolumeKey(const BindContext& context, const std::vector<const B
         for (const TextureDecl& t : b->function->textures) {
             const std::string name = (t.shared ? t.name : t.name + b->suffix) + b->memberSuffix;
             auto unit = context.textureUnits.find(name);
-            if (unit == context.textureUnits.end() || name.rfind("volren_lightVolume", 0) == 0) continue;
+            if (unit == context.textureUnits.end() || name.rfind("volren_lightVolume", 0) == 0 ||
+                name.rfind("volren_opacityMips", 0) == 0)
+                continue;  // what is built
             key << ' ' << name << ' ' << context.stateSet.getTextureAttribute(unsigned(unit->second), osg::StateAttribute::TEXTURE);
         }
     }
@@ -197,10 +204,14 @@ bool bindProgram(BindContext& context, const ComposedProgram& program,
             gridShapeFor(context.volume.dims(), context.settings.macrocellSize, footprintOf(mine), context.lod);
         context.aux[AuxData::MacrocellRanges] = textures.ranges(context.volume, shape.cellSize, shape.apron, cull);
     }
+    const osg::Vec3i levelDims = mipDims(context.volume.dims(), context.lod);
     if (needs(AuxData::LightVolume))
-        context.aux[AuxData::LightVolume] = textures.lightVolumes().texture(
-            &context.node, lightVolumeDims(mipDims(context.volume.dims(), context.lod), context.settings.lightVolumeScale),
-            int(context.lights.size()), cull);
+        context.aux[AuxData::LightVolume] = textures.builtVolumes().texture(
+            &context.node, AuxData::LightVolume, lightVolumeDims(levelDims, context.settings.lightVolumeScale),
+            lightVolumeChannels(context.lights.size()), false, cull);
+    if (needs(AuxData::OpacityMipChain))
+        context.aux[AuxData::OpacityMipChain] =
+            textures.builtVolumes().texture(&context.node, AuxData::OpacityMipChain, levelDims, 1, true, cull);
 
     static const std::vector<ClipInfo> none;
     for (const Binding* b : mine) {
@@ -213,13 +224,22 @@ bool bindProgram(BindContext& context, const ComposedProgram& program,
     }
     context.suffix.clear();
     context.instance = -1;
-    // A light volume is rebuilt, before the ray caster draws, when what its build reads changed.
-    if (needs(AuxData::LightVolume) && program.buildProgram)
-        if (osg::Node* build = textures.lightVolumes().build(&context.node, lightVolumeKey(context, mine),
-                                                             program.buildProgram.get(), context.lights,
-                                                             context.boxSize.length2() > 0.0 ? context.boxSize
-                                                                                             : context.volume.worldSize()))
-            context.prepasses.push_back(build);
+    // A built volume is rebuilt, before the ray caster draws, when what its build reads changed.
+    if (program.buildProgram) {
+        const osg::Vec3d box = context.boxSize.length2() > 0.0 ? context.boxSize : context.volume.worldSize();
+        osg::Node* build = nullptr;
+        if (needs(AuxData::LightVolume)) {
+            const osg::Texture3D& t = static_cast<const osg::Texture3D&>(*context.aux.at(AuxData::LightVolume));
+            const osg::Vec3i dims(t.getTextureWidth(), t.getTextureHeight(), t.getTextureDepth());
+            build = textures.builtVolumes().build(&context.node, AuxData::LightVolume, builtVolumeKey(context, mine, true),
+                                                  program.buildProgram.get(), lightVolumePlan(context.lights, box, dims));
+        } else if (needs(AuxData::OpacityMipChain)) {
+            build = textures.builtVolumes().build(&context.node, AuxData::OpacityMipChain,
+                                                  builtVolumeKey(context, mine, false), program.buildProgram.get(),
+                                                  opacityVolumePlan(levelDims));
+        }
+        if (build) context.prepasses.push_back(build);
+    }
     return anyVisible;
 }
 

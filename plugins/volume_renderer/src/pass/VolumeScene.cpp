@@ -195,10 +195,10 @@ std::vector<BrickStatistics> VolumeScene::brickStatistics() const
     return _state->textures.brickStatistics(_state->cull);
 }
 
-std::vector<LightVolumeStatistics> VolumeScene::lightVolumeStatistics() const
+std::vector<BuiltVolumeStatistics> VolumeScene::builtVolumeStatistics() const
 {
     std::lock_guard<std::mutex> lock(_mutex);
-    return _state->textures.lightVolumes().statistics(_state->cull);
+    return _state->textures.builtVolumes().statistics(_state->cull);
 }
 
 std::size_t VolumeScene::pendingBricks() const

@@ -272,7 +272,7 @@ void TextureCache::endCull(unsigned int cull)
     dropStale(_ranges, cull);
     dropStale(_occupancies, cull);
     dropStale(_bricks, cull);
-    _lightVolumes.endCull(cull);
+    _builtVolumes.endCull(cull);
 }
 
 std::size_t TextureCache::count() const
@@ -280,7 +280,7 @@ std::size_t TextureCache::count() const
     std::size_t rangeTextures = 0;
     for (const auto& [key, r] : _ranges) rangeTextures += r.texture ? 1 : 0;
     return _volumes.size() + _tables.size() + _occupancies.size() + rangeTextures + 2 * _bricks.size() +
-           _lightVolumes.count();
+           _builtVolumes.count();
 }
 
 std::size_t TextureCache::bytes() const
@@ -294,7 +294,7 @@ std::size_t TextureCache::bytes() const
         const BrickStatistics s = b.streamer->statistics({});
         bricks += s.poolBytes + textureBytes(*b.streamer->state().pageTable);
     }
-    return imageBytes(_volumes) + imageBytes(_tables) + occupancy + bricks + _lightVolumes.bytes();
+    return imageBytes(_volumes) + imageBytes(_tables) + occupancy + bricks + _builtVolumes.bytes();
 }
 
 }  // namespace volren

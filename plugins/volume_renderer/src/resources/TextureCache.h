@@ -10,7 +10,7 @@
 #include <volume_renderer/BrickStreamer.h>
 #include <volume_renderer/MacrocellGrid.h>
 
-#include "LightVolume.h"
+#include "BuiltVolumes.h"
 
 #include <functional>
 #include <map>
@@ -61,9 +61,9 @@ public:
     void waitForBricks(unsigned int cull, double seconds) const;
     /// Occupancy grids built so far (each TF or classification change builds one).
     unsigned int occupancyBuilds() const { return _occupancyBuilds; }
-    /// The propagated light volumes (Shadowing light_volume), one per node.
-    LightVolumes& lightVolumes() { return _lightVolumes; }
-    const LightVolumes& lightVolumes() const { return _lightVolumes; }
+    /// The auxiliary volumes built on the GPU (light volumes, opacity mip chains), per node.
+    BuiltVolumes& builtVolumes() { return _builtVolumes; }
+    const BuiltVolumes& builtVolumes() const { return _builtVolumes; }
     /// Frees what the last few cull traversals before `cull` did not use.
     void endCull(unsigned int cull);
     /// Textures held.
@@ -124,7 +124,7 @@ private:
     /// Levels 1 .. `count` of `volume`'s mip chain, made when missing or the volume changed.
     const std::vector<osg::ref_ptr<osg::Image>>& levelImages(const Volume& volume, int count, unsigned int cull);
     unsigned int _occupancyBuilds = 0;
-    LightVolumes _lightVolumes;
+    BuiltVolumes _builtVolumes;
 };
 
 }  // namespace volren
