@@ -87,6 +87,7 @@ std::string lightingModel(const ReferenceScene& scene, bool lighting)
         if (lit && shading->second != "lighting") model += "/" + shading->second;  // another lit picture
         const auto shadowing = placed.choice.find("Shadowing");  // every shadowing approximates exact shadows
         if (lit && shadowing != placed.choice.end() && shadowing->second != "null") model += "+shadows";
+        if (lit && shadowing != placed.choice.end() && shadowing->second == "cone_ao") model += "+occlusion";
         key += (key.empty() ? "" : "+") + model;
     }
     return key;
@@ -233,6 +234,7 @@ public:
         BenchRow row = timeFrames(config.name);
         row.truth = truth;
         row.error = imageError(*_renderer.image(), _truths.at(truth));
+        measureLightMoves(row);  // after the error: it renders with the lights turned
         std::cerr << "volren bench: " << config.name << ": " << row.frameMs << " ms, RMSE " << row.error.rmse << std::endl;
         return row;
     }
@@ -312,7 +314,6 @@ private:
         row.textureMb = double(_renderer.volumeScene()->textureBytes()) / (1024.0 * 1024.0);
         row.gpuMemoryMb = freeBefore >= 0.0 && freeAfter >= 0.0 ? freeBefore - freeAfter : -1.0;
         row.keys = _renderer.volumeScene()->compositionKeys();
-        measureLightMoves(row);
         return row;
     }
 
@@ -350,9 +351,9 @@ private:
         std::size_t bytes = 0, voxels = 0;
         for (const BuiltVolumeStatistics& s : _renderer.volumeScene()->builtVolumeStatistics()) {
             bytes += s.bytes;
+            voxels += s.volumeVoxels;
             row.rebuildMs = std::max(row.rebuildMs, s.lastBuildSeconds * 1e3);
         }
-        for (VolumeNode* n : _nodes) voxels += n->getVolume()->voxelCount();
         if (bytes > 0 && voxels > 0) row.auxBytesPerVoxel = double(bytes) / double(voxels);
     }
 

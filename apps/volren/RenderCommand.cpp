@@ -97,6 +97,7 @@ int renderCommand(const std::vector<std::string>& args, bool defaultRun)
                                     {"dims", {l.dims.x(), l.dims.y(), l.dims.z()}},
                                     {"channels", l.channels},
                                     {"bytes", l.bytes},
+                                    {"bytes_per_voxel", l.volumeVoxels ? double(l.bytes) / double(l.volumeVoxels) : 0.0},
                                     {"builds", l.builds},
                                     {"last_build_ms", l.lastBuildSeconds * 1e3}});
         stats["built_volumes"] = built;

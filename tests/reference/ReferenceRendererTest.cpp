@@ -432,5 +432,39 @@ TEST(ReferenceShadows, NullShadowingIsTheUnshadowedImageBitForBitAndUnknownOnesA
     EXPECT_NO_THROW(renderReference(ReferenceScene::collect(*root), camera, unlit));
 }
 
+
+TEST(ReferenceShadows, AmbientOcclusionDeepInAHomogeneousMediumIsExpMinusSigmaTimesItsReach)
+{
+    // A 40^3 block as opaque everywhere (alpha 0.08 per voxel), white only in the layer 20-21
+    // voxels below the face the camera looks at; lit by ambient light only (a black light). Every
+    // direction over the layer's hemisphere (reach 8 voxels, from half a voxel out) stays inside
+    // the block, so cone_ao's occlusion there is exp(-sigma 7.5) and scales the layer's light.
+    const int n = 40;
+    osg::ref_ptr<Volume> v = new Volume;
+    v->allocate(VoxelType::UInt8, {n, n, n});
+    for (int z = 0; z < n; ++z) std::fill_n(v->data() + std::size_t(z) * n * n, std::size_t(n) * n, z == n - 21 ? 200 : 100);
+    v->dirty();
+    const float a = 0.08f;
+    auto tf = transferFunction({{150.0, osg::Vec4(0, 0, 0, a)}, {200.0, osg::Vec4(1, 1, 1, a)}}, 0.0, 255.0);
+    ReferenceOptions options;
+    options.tolerance = 1e-5;
+    auto render = [&](const char* shadowing) {
+        auto node = makeVolumeNode(v.get(), tf.get());
+        litByLambert(*node, shadowing);
+        node->settings.ambient = 0.5;
+        osg::ref_ptr<osg::Group> root = withNode(node);
+        osg::ref_ptr<osg::LightSource> light = lightAt(osg::Vec4(0, 0, 1, 0));
+        light->getLight()->setDiffuse(osg::Vec4(0, 0, 0, 1));
+        root->addChild(light.get());
+        return renderReference(ReferenceScene::collect(*root), orthoPixelPerUnit(1, 1), options);
+    };
+    const ReferenceImage open = render("cone"), occluded = render("cone_ao");
+    EXPECT_EQ(occluded.unconverged, 0u);
+    ASSERT_GT(open.at(0, 0, 0), 1e-4);
+    const double sigma = -std::log1p(-double(a));
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(occluded.at(0, 0, c) / open.at(0, 0, c), std::exp(-sigma * 7.5), 1e-4) << c;
+    EXPECT_EQ(occluded.at(0, 0, 3), open.at(0, 0, 3)) << "occlusion changes light, not coverage";
+}
+
 }  // namespace
 }  // namespace volren::test

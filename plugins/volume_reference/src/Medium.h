@@ -70,6 +70,12 @@ struct Medium
     /// or the step reaches shadowFinestStep x Δ0.
     ReferenceScene::Shadows shadows = ReferenceScene::Shadows::None;
     double shadowTolerance = 2.5e-5, shadowFirstStep = 0.25, shadowFinestStep = 1.0 / 4096.0;
+    /// Ambient occlusion (Shadowing cone_ao): the ambient term scaled by (1/pi) times the
+    /// integral over the hemisphere around the normal of the transmittance from occlusionStart to
+    /// occlusionDistance (local lengths) along each direction, weighted by its cosine; the
+    /// quadrature's directions quadrupled until two estimates differ by at most 4 shadowTolerance.
+    bool occlusion = false;
+    double occlusionStart = 0.0, occlusionDistance = 0.0;
     osg::Matrixd localToWorld;
     std::vector<Clip> clips;  ///< the clip shapes that apply, from local coordinates
     /// Shadow rays' empty-space test, per block of 4^3 trilinear cells: whether the TF gives
@@ -96,6 +102,8 @@ struct Medium
     /// min(`distance`, the way out of the box): exp(-the integral of the extinction, in world
     /// lengths as the view ray's), converged; 0 past an opaque (α >= 1) point, 1 for no path.
     double transmittance(const glm::dvec3& local, const glm::dvec3& l, double distance, ShadowTally& tally) const;
+    /// The ambient occlusion at local point `local` around the unit `normal` (see `occlusion`).
+    double ambientOcclusion(const glm::dvec3& local, const glm::dvec3& normal, ShadowTally& tally) const;
     /// Fills emptyBlocks from the volume and the TF.
     void findEmptyBlocks();
     /// Whether `tc` lies in an empty block (false when there are none).

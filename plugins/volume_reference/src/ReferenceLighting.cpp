@@ -24,6 +24,7 @@ glm::dvec3 Medium::shade(const glm::dvec3& tc, const glm::dvec3& local, const gl
     glm::dvec3 normal = scale > 1e-30 && std::isfinite(scale) ? -glm::normalize(gradient / scale) : view;
     if (glm::dot(normal, view) < 0.0) normal = -normal;  // two-sided: normals face the viewer
     glm::dvec3 colour = ambient * albedo;
+    if (occlusion && colour != glm::dvec3(0.0)) colour *= ambientOcclusion(local, normal, tally);  // none for no light
     for (const auto& [position, lightColour] : lights) {
         const glm::dvec3 toLight = position.w == 0.0 ? glm::dvec3(position) : glm::dvec3(position) - local;
         const double length = glm::length(toLight);
@@ -114,11 +115,17 @@ void setShading(Medium& m, const ReferenceScene::Placed& placed, bool lit)
     } else {
         const std::string shadowing = decided || lit ? choiceOf(placed, s, "Shadowing") : "null";
         if (shadowing == "null") m.shadows = ReferenceScene::Shadows::None;
-        else if (shadowing == "ray" || shadowing == "light_volume" || shadowing == "cone") m.shadows = ReferenceScene::Shadows::Exact;
+        else if (shadowing == "ray" || shadowing == "light_volume" || shadowing == "cone" || shadowing == "cone_ao")
+            m.shadows = ReferenceScene::Shadows::Exact;
         else
             throw std::invalid_argument("reference: no model for Shadowing '" + shadowing + "' (volume '" +
                                         node.getName() + "'; Placed::shadows may say which it approximates)");
     }
+    // cone_ao's occlusion: its cones' start and reach, in voxels of the smallest extent.
+    m.occlusion = (decided || lit) && choiceOf(placed, s, "Shadowing") == "cone_ao";
+    const double voxel = std::min({m.size.x / m.dims.x, m.size.y / m.dims.y, m.size.z / m.dims.z});
+    m.occlusionStart = s.coneStart * voxel;
+    m.occlusionDistance = s.aoDistance * voxel;
     m.ambient = s.ambient;
     m.specular = s.specular;
     m.shininess = s.shininess;

@@ -59,6 +59,34 @@ double opticalDepth(const Medium& m, const glm::dvec3& local, const glm::dvec3& 
 
 }  // namespace
 
+double Medium::ambientOcclusion(const glm::dvec3& local, const glm::dvec3& normal, ShadowTally& tally) const
+{
+    if (!(occlusionDistance > occlusionStart)) return 1.0;
+    // Cosine-weighted directions at the midpoints of n x n strata of the unit square (r = sqrt(u),
+    // phi = 2 pi v over the disc, lifted onto the hemisphere): their mean transmittance is the
+    // cosine-weighted integral over pi.
+    const glm::dvec3 helper = std::abs(normal.x) < 0.9 ? glm::dvec3(1.0, 0.0, 0.0) : glm::dvec3(0.0, 1.0, 0.0);
+    const glm::dvec3 u = glm::normalize(glm::cross(normal, helper)), v = glm::cross(normal, u);
+    auto estimate = [&](int n) {
+        double sum = 0.0;
+        for (int i = 0; i < n; ++i)
+            for (int j = 0; j < n; ++j) {
+                const double a = (i + 0.5) / n, phi = 2.0 * M_PI * (j + 0.5) / n, r = std::sqrt(a);
+                const glm::dvec3 d = u * (r * std::cos(phi)) + v * (r * std::sin(phi)) + normal * std::sqrt(1.0 - a);
+                sum += transmittance(local + d * occlusionStart, d, occlusionDistance - occlusionStart, tally);
+            }
+        return sum / double(n * n);
+    };
+    double coarse = estimate(4);
+    for (int n = 8; n <= 32; n *= 2) {
+        const double fine = estimate(n);
+        if (std::abs(fine - coarse) <= 4.0 * shadowTolerance) return fine;
+        coarse = fine;
+    }
+    tally.converged = false;
+    return coarse;
+}
+
 void Medium::findEmptyBlocks()
 {
     for (int a = 0; a < 3; ++a) blockCount[a] = (std::max(dims[a] - 1, 1) + blockCells - 1) / blockCells;

@@ -15,6 +15,7 @@ struct BuiltVolumeStatistics
     osg::Vec3i dims;                ///< texels per axis of its finest level
     int channels = 0;               ///< half-float channels per texel (a light volume: one per light, 3 use 4)
     std::size_t bytes = 0;          ///< texture storage, every level
+    std::size_t volumeVoxels = 0;   ///< voxels of the node's volume (bytes per voxel = bytes / this)
     unsigned int builds = 0;        ///< builds so far
     double lastBuildSeconds = 0.0;  ///< wall time of the last build, the GPU finished before and after
 };

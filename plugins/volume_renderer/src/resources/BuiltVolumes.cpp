@@ -3,6 +3,7 @@
 // mipmap generation may blend the zero border into edge texels, so the plan writes them).
 #include "BuiltVolumes.h"
 
+#include <volume_model/Volume.h>
 #include <volume_model/VolumeNode.h>
 
 #include <osg/BindImageTexture>
@@ -119,6 +120,7 @@ const char* kindName(AuxData kind)
 struct BuiltVolumes::Entry
 {
     std::string name;
+    std::size_t voxels = 0;
     osg::ref_ptr<osg::Texture3D> texture;
     int channels = 0;
     bool mipmapped = false;
@@ -161,6 +163,7 @@ osg::Texture3D* BuiltVolumes::texture(const VolumeNode* node, AuxData kind, cons
         e->state->setDataVariance(osg::Object::DYNAMIC);
     }
     e->name = node->getName();
+    e->voxels = node->getVolume() ? node->getVolume()->voxelCount() : 0;
     e->lastCull = cull;
     osg::Texture3D* t = e->texture.get();
     if (!t || t->getTextureWidth() != dims.x() || t->getTextureHeight() != dims.y() || t->getTextureDepth() != dims.z() ||
@@ -228,7 +231,7 @@ std::vector<BuiltVolumeStatistics> BuiltVolumes::statistics(unsigned int cull) c
     for (const auto& [key, e] : _entries) {
         if (e->lastCull != cull || !e->texture) continue;
         const osg::Vec3i dims(e->texture->getTextureWidth(), e->texture->getTextureHeight(), e->texture->getTextureDepth());
-        out.push_back({e->name, kindName(key.second), dims, e->channels, e->bytes(), e->build->builds(),
+        out.push_back({e->name, kindName(key.second), dims, e->channels, e->bytes(), e->voxels, e->build->builds(),
                        e->build->lastSeconds()});
     }
     return out;
