@@ -8,11 +8,7 @@
 float volren_coneDepth(vec3 pos, vec3 dirWorld, float maxDistance, float tanHalfAngle)
 {
     vec3 dirTex = dirWorld / volren_worldSize;  // texture space per world unit
-    float exitDistance = 1e30;
-    for (int a = 0; a < 3; ++a) {
-        if (dirTex[a] > 1e-30) exitDistance = min(exitDistance, (1.0 - pos[a]) / dirTex[a]);
-        else if (dirTex[a] < -1e-30) exitDistance = min(exitDistance, -pos[a] / dirTex[a]);
-    }
+    float exitDistance = volren_boxExit(pos, dirTex);
     float len = min(exitDistance, maxDistance);
     float voxel = volren_coneVoxel;
     float t = volren_coneStart * voxel;

@@ -69,11 +69,7 @@ void main()
     float len = length(toLight);
     if (len > 0.0 && lightDistance > 0.0) {
         vec3 dirTex = toLight / len / volren_worldSize;  // texture space per world unit
-        float exitDistance = 1e30;
-        for (int a = 0; a < 3; ++a) {
-            if (dirTex[a] > 1e-30) exitDistance = min(exitDistance, (1.0 - pos[a]) / dirTex[a]);
-            else if (dirTex[a] < -1e-30) exitDistance = min(exitDistance, -pos[a] / dirTex[a]);
-        }
+        float exitDistance = volren_boxExit(pos, dirTex);
         // The neighbouring slice towards the light, and the distance to its plane.
         float along = dirTex[volren_buildAxis];
         int neighbour = volren_buildSlice + (along > 0.0 ? 1 : -1);

@@ -9,11 +9,7 @@
 float volren_shadow(vec3 pos, vec3 lightDir, float lightDistance, int light)
 {
     vec3 dirTex = lightDir / volren_worldSize;  // texture space per world unit
-    float exitDistance = 1e30;
-    for (int a = 0; a < 3; ++a) {
-        if (dirTex[a] > 1e-30) exitDistance = min(exitDistance, (1.0 - pos[a]) / dirTex[a]);
-        else if (dirTex[a] < -1e-30) exitDistance = min(exitDistance, -pos[a] / dirTex[a]);
-    }
+    float exitDistance = volren_boxExit(pos, dirTex);
     float len = min(exitDistance, lightDistance);
     if (!(len > 0.0) || !(volren_shadowStep > 0.0)) return 1.0;
     int count = int(min(ceil(len / volren_shadowStep), 16384.0));

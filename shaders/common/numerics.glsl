@@ -45,3 +45,15 @@ vec3 volren_normalFromGradient(vec3 gradient, vec3 viewDir)
     vec3 n = -normalize(gradient / scale);  // normals point from dense to empty
     return dot(n, viewDir) < 0.0 ? -n : n;
 }
+
+// How far pos (inside the unit box of texture space) goes along dir (texture space per unit of
+// the caller's length) before leaving the box, in those units; 1e30 for a zero direction.
+float volren_boxExit(vec3 pos, vec3 dir)
+{
+    float exitDistance = 1e30;
+    for (int a = 0; a < 3; ++a) {
+        if (dir[a] > 1e-30) exitDistance = min(exitDistance, (1.0 - pos[a]) / dir[a]);
+        else if (dir[a] < -1e-30) exitDistance = min(exitDistance, -pos[a] / dir[a]);
+    }
+    return exitDistance;
+}
