@@ -85,9 +85,9 @@ std::string lightingModel(const ReferenceScene& scene, bool lighting)
         const bool lit = lighting && !scene.lights.empty() && shading != placed.choice.end() && shading->second != "null";
         std::string model = lit ? "lit:" + placed.choice.at("Illumination") : std::string("unlit");
         if (lit && shading->second != "lighting") model += "/" + shading->second;  // another lit picture
-        const auto shadowing = placed.choice.find("Shadowing");  // every shadowing approximates exact shadows
-        if (lit && shadowing != placed.choice.end() && shadowing->second != "null") model += "+shadows";
-        if (lit && shadowing != placed.choice.end() && shadowing->second == "cone_ao") model += "+occlusion";
+        // What its Shadowing approximates (referenceScene fills it from the implementation's traits).
+        if (lit && placed.shadows == ReferenceScene::Shadows::Exact) model += "+shadows";
+        if (lit && placed.occlusion) model += "+occlusion";
         key += (key.empty() ? "" : "+") + model;
     }
     return key;

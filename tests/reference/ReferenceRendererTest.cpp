@@ -448,17 +448,19 @@ TEST(ReferenceShadows, AmbientOcclusionDeepInAHomogeneousMediumIsExpMinusSigmaTi
     auto tf = transferFunction({{150.0, osg::Vec4(0, 0, 0, a)}, {200.0, osg::Vec4(1, 1, 1, a)}}, 0.0, 255.0);
     ReferenceOptions options;
     options.tolerance = 1e-5;
-    auto render = [&](const char* shadowing) {
+    auto render = [&](bool occlusion) {  // exact shadows, with or without ambient occlusion (cone, cone_ao)
         auto node = makeVolumeNode(v.get(), tf.get());
-        litByLambert(*node, shadowing);
+        litByLambert(*node, "ray");
         node->settings.ambient = 0.5;
         osg::ref_ptr<osg::Group> root = withNode(node);
         osg::ref_ptr<osg::LightSource> light = lightAt(osg::Vec4(0, 0, 1, 0));
         light->getLight()->setDiffuse(osg::Vec4(0, 0, 0, 1));
         root->addChild(light.get());
-        return renderReference(ReferenceScene::collect(*root), orthoPixelPerUnit(1, 1), options);
+        ReferenceScene content = ReferenceScene::collect(*root);
+        content.volumes[0].occlusion = occlusion;
+        return renderReference(content, orthoPixelPerUnit(1, 1), options);
     };
-    const ReferenceImage open = render("cone"), occluded = render("cone_ao");
+    const ReferenceImage open = render(false), occluded = render(true);
     EXPECT_EQ(occluded.unconverged, 0u);
     ASSERT_GT(open.at(0, 0, 0), 1e-4);
     const double sigma = -std::log1p(-double(a));

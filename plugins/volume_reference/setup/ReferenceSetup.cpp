@@ -1,26 +1,14 @@
 #include <volume_reference/ReferenceSetup.h>
 
 #include <volume_renderer/OffscreenRenderer.h>
+#include <volume_renderer/ShaderFunctionRegistry.h>
 #include <volume_renderer/VolumeScene.h>
 
-#include <map>
 #include <stdexcept>
 
 namespace volren {
 
 namespace {
-
-/// The shadow model each of the renderer's Shadowing implementations approximates; one missing
-/// here is left to renderReference, which refuses it by name. (Later approximations of the same
-/// transmittance, a light volume or cone tracing, map to Exact too.)
-const std::map<std::string, ReferenceScene::Shadows>& shadowModels()
-{
-    static const std::map<std::string, ReferenceScene::Shadows> models = {
-        {"null", ReferenceScene::Shadows::None},
-        {"ray", ReferenceScene::Shadows::Exact},
-    };
-    return models;
-}
 
 /// Rasterises `scene` without its volumes for `camera`; fills the options' geometry depth and
 /// colour when anything was drawn.
@@ -64,9 +52,12 @@ ReferenceScene referenceScene(VolumeScene& scene)
     for (auto& placed : content.volumes) {
         const auto& node = static_cast<const VolumeNode&>(*placed.node);
         placed.choice = scene.policy().choose(node.settings, offer, scene.pass).composition.choice;
+        // What the chosen Shadowing approximates, from its traits (a plugin's without them: nothing).
         if (auto it = placed.choice.find("Shadowing"); it != placed.choice.end())
-            if (auto model = shadowModels().find(it->second); model != shadowModels().end())
-                placed.shadows = model->second;
+            if (const ShaderFunction* f = ShaderFunctionRegistry::instance().find("Shadowing", it->second)) {
+                placed.shadows = f->traits.shadows ? ReferenceScene::Shadows::Exact : ReferenceScene::Shadows::None;
+                placed.occlusion = f->traits.occlusion;
+            }
     }
     return content;
 }

@@ -115,14 +115,13 @@ void setShading(Medium& m, const ReferenceScene::Placed& placed, bool lit)
     } else {
         const std::string shadowing = decided || lit ? choiceOf(placed, s, "Shadowing") : "null";
         if (shadowing == "null") m.shadows = ReferenceScene::Shadows::None;
-        else if (shadowing == "ray" || shadowing == "light_volume" || shadowing == "cone" || shadowing == "cone_ao")
-            m.shadows = ReferenceScene::Shadows::Exact;
+        else if (shadowing == "ray") m.shadows = ReferenceScene::Shadows::Exact;  // the definition itself
         else
             throw std::invalid_argument("reference: no model for Shadowing '" + shadowing + "' (volume '" +
                                         node.getName() + "'; Placed::shadows may say which it approximates)");
     }
-    // cone_ao's occlusion: its cones' start and reach, in voxels of the smallest extent.
-    m.occlusion = (decided || lit) && choiceOf(placed, s, "Shadowing") == "cone_ao";
+    // Ambient occlusion from the cones' start to their reach, in voxels of the smallest extent.
+    m.occlusion = (decided || lit) && placed.occlusion;
     const double voxel = std::min({m.size.x / m.dims.x, m.size.y / m.dims.y, m.size.z / m.dims.z});
     m.occlusionStart = s.coneStart * voxel;
     m.occlusionDistance = s.aoDistance * voxel;

@@ -30,9 +30,13 @@ struct ReferenceScene
         /// settings, an unset slot being null (referenceSetup() fills it from the CompositionPolicy).
         std::map<std::string, std::string> choice = {};
         /// Volumes: their shadow model. Unset: from the Shadowing choice (null: None, ray: Exact;
-        /// any other makes renderReference throw). referenceSetup() sets it from the renderer's
-        /// choice, so that an approximation of exact shadows is measured against them.
+        /// any other makes renderReference throw). referenceSetup() sets it from the traits of
+        /// the renderer's choice, so that an approximation of exact shadows is measured against them.
         std::optional<Shadows> shadows = {};
+        /// Volumes: their ambient term is scaled by its occlusion (the cosine-weighted hemisphere
+        /// integral of the transmittance over the settings' coneStart..aoDistance). referenceSetup()
+        /// sets it from the traits of the renderer's Shadowing choice.
+        bool occlusion = false;
     };
     std::vector<Placed> volumes;  ///< VolumeNodes with a volume and a transfer function
     std::vector<Placed> clips;    ///< ClipNodes

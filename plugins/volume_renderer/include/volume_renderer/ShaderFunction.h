@@ -84,6 +84,11 @@ struct ImplementationTraits
     /// Shadowing: it samples the volume away from the view ray, so every clip shape must be
     /// known per sample (the policy puts clip planes in ClipPosition instead of ClipRay).
     bool clipsPerSample = false;
+    /// Shadowing: the light transport it approximates, which the reference renderer computes
+    /// exactly and measures it against: each light's transmittance to the sample (`shadows`)
+    /// and the ambient term scaled by the hemisphere's transmittance over its reach (`occlusion`).
+    bool shadows = false;
+    bool occlusion = false;  ///< see `shadows`
     /// Other names users may give it in settings ("dvr" for dvr_front_to_back).
     std::vector<std::string> aliases = {};
 };

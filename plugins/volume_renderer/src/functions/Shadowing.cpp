@@ -35,6 +35,7 @@ void registerShadowingFunctions(ShaderFunctionRegistry& registry)
                       },
                   .traits = {.calls = SlotList{"Reconstruction", "Classification", "ClipPosition"},
                              .clipsPerSample = true,
+                             .shadows = true,
                              .aliases = {"shadowray", "shadow_ray", "rays"}}});
 
     // Propagated light volume: each light's transmittance in a half-float volume, built on the GPU
@@ -58,6 +59,7 @@ void registerShadowingFunctions(ShaderFunctionRegistry& registry)
                       },
                   .traits = {.calls = SlotList{"Reconstruction", "Classification", "ClipPosition"},
                              .clipsPerSample = true,
+                             .shadows = true,
                              .aliases = {"lightvolume", "light-volume", "propagated"}}});
 
     // Cone tracing through the opacity mip chain: soft shadows (cone), and with directional
@@ -103,6 +105,8 @@ void registerShadowingFunctions(ShaderFunctionRegistry& registry)
                       .bind = bindCone,
                       .traits = {.calls = SlotList{"Reconstruction", "Classification", "ClipPosition"},
                                  .clipsPerSample = true,
+                                 .shadows = true,
+                                 .occlusion = std::string(name) == "cone_ao",
                                  .aliases = std::string(name) == "cone" ? std::vector<std::string>{"cones", "cone_shadows"}
                                                                         : std::vector<std::string>{"cones_ao", "cone+ao"}}});
 }
