@@ -7,13 +7,12 @@
 // bilinear gathers read a constant slice). A sample between texel centres reads the trilinear
 // mix of its two neighbours (clamped at the ends), stored in half floats; that is the expected
 // shadow of each view-ray segment, and shadow rays give the continuous exp(-sigma * s).
-#include "RenderFixture.h"
+#include "LitBlock.h"
 #include "TestData.h"
 
 #include <volume_model/ClipPlaneNode.h>
 #include <volume_model/DefaultScene.h>
-
-#include <osg/LightSource>
+#include <volume_reference/ReferenceSetup.h>
 
 #include <cmath>
 #include <functional>
@@ -21,52 +20,9 @@
 namespace volren::test {
 namespace {
 
-constexpr int depthVoxels = 16;  // block depth along z (spacing 1)
-constexpr double step = 0.5;     // view step (sampleFactor 0.5)
-constexpr double alpha = 0.08;   // TF opacity of one reference segment (one voxel)
-const double sigma = -std::log1p(-alpha);
-
-class LightVolume : public RenderFixture
+class LightVolume : public LitBlock
 {
 protected:
-    /// `volume` lit by `lights` (Lambert, no ambient) with `shadowing` at light volume `scale`.
-    static osg::ref_ptr<VolumeScene> lit(Volume* volume, TransferFunction* tf, const char* shadowing, double scale = 1.0,
-                                         const std::vector<osg::Vec4>& lights = {{0, 0, 1, 0}})
-    {
-        osg::ref_ptr<VolumeNode> node = volumeNode(volume, tf);
-        node->settings.functions["Shading"] = "lighting";
-        node->settings.functions["Illumination"] = "lambert";
-        node->settings.functions["Shadowing"] = shadowing;
-        node->settings.ambient = 0.0;
-        node->settings.earlyTerminationThreshold = 1.0;
-        node->settings.sampleDistanceFactor = step;
-        node->settings.lightVolumeScale = scale;
-        osg::ref_ptr<VolumeScene> scene = new VolumeScene;
-        scene->addChild(node.get());
-        for (std::size_t i = 0; i < lights.size(); ++i) {
-            osg::ref_ptr<osg::LightSource> source = new osg::LightSource;
-            source->getLight()->setLightNum(int(i));
-            source->getLight()->setPosition(lights[i]);
-            scene->addChild(source.get());
-        }
-        return scene;
-    }
-
-    /// The shadowed over the unshadowed emission of a homogeneous block seen from the light
-    /// (+z), view segments i from `first` on, each shadowed by `shadow(i)`.
-    static double expectedRatio(int first, const std::function<double(int)>& shadow)
-    {
-        const double q = std::exp(-sigma * step);
-        double lit = 0.0, unlit = 0.0, transmittance = 1.0;
-        for (int i = first; i < int(depthVoxels / step); ++i) {
-            const double w = transmittance * (1.0 - q);
-            lit += w * shadow(i);
-            unlit += w;
-            transmittance *= q;
-        }
-        return lit / unlit;
-    }
-
     /// What a light volume of `n` texels along z reads at `depth` voxels below the lit face of
     /// the block when its texels hold exp(-sigma * (depth of their centre - `cut`)), or 1 above
     /// `cut` (material above it clipped away): the linear mix of the two nearest centres.
@@ -253,7 +209,7 @@ double chainDepth(double depth)
     auto field = [](double d) { return d >= 0.5 ? 1.0 : 0.5 + d; };
     double total = 0.0;
     for (double t = 0.0; t < depth - 1e-12;) {
-        const double h = std::min(step, depth - t);
+        const double h = std::min(LitBlock::step, depth - t);
         total += field(depth - (t + 0.5 * h)) * h;
         t += h;
     }
@@ -345,6 +301,26 @@ TEST_F(LightVolume, ConeTracingFollowsShadowRaysAndRebuildsOnlyForTheTransferFun
     tf->setPoint(255, {1, 1, 1, 0.4f});
     renderOrthoFromPlusZ(scene.get(), 16, 16, 36.0);
     EXPECT_EQ(builds(), 2u) << "a TF edit rebuilds it";
+}
+
+TEST_F(LightVolume, TheReferenceMeasuresEachShadowingAgainstWhatItApproximates)
+{
+    // Every method approximates exact shadows; cone_ao also the ambient occlusion. The reference
+    // setup reads this from the implementations' traits, the bench's truth keys from it.
+    osg::ref_ptr<Volume> block = constantVolume(VoxelType::UInt8, {8, 8, 8}, 100);
+    osg::ref_ptr<TransferFunction> tf = constantTransferFunction(osg::Vec4(1, 1, 1, 0.1f));
+    const std::map<std::string, std::pair<ReferenceScene::Shadows, bool>> expected = {
+        {"null", {ReferenceScene::Shadows::None, false}},  {"ray", {ReferenceScene::Shadows::Exact, false}},
+        {"light_volume", {ReferenceScene::Shadows::Exact, false}}, {"cone", {ReferenceScene::Shadows::Exact, false}},
+        {"cone_ao", {ReferenceScene::Shadows::Exact, true}}};
+    for (const auto& [method, truth] : expected) {
+        osg::ref_ptr<VolumeScene> scene = lit(block.get(), tf.get(), method.c_str());
+        const ReferenceScene content = referenceScene(*scene);
+        ASSERT_EQ(content.volumes.size(), 1u);
+        ASSERT_TRUE(content.volumes[0].shadows.has_value()) << method;
+        EXPECT_EQ(*content.volumes[0].shadows, truth.first) << method;
+        EXPECT_EQ(content.volumes[0].occlusion, truth.second) << method;
+    }
 }
 
 }  // namespace

@@ -3,73 +3,31 @@
 // Lambert gives 1 and, with no ambient, a sample's emission is K * c * T_light. The shadow ray
 // to the light runs back along the view ray, so T_light = exp(-sigma * s) for a sample s deep:
 // the image with shadows is the image without, each segment weighted by that factor.
-#include "RenderFixture.h"
+#include "LitBlock.h"
 #include "TestData.h"
 
 #include <volume_model/ClipPlaneNode.h>
 #include <volume_model/DefaultScene.h>
 
-#include <osg/LightSource>
-
 #include <cmath>
-#include <functional>
 
 namespace volren::test {
 namespace {
 
-constexpr int depthVoxels = 16;   // block depth along z (spacing 1)
-constexpr double step = 0.5;      // view step (sampleFactor 0.5), also the shadow step
-constexpr double alpha = 0.08;    // TF opacity of one reference segment (one voxel)
-
-class Shadowing : public RenderFixture
+class Shadowing : public LitBlock
 {
-protected:
-    /// A 16^3 block of `value`s (uint8) lit from +z (towards the viewer), Lambert, no ambient.
-    static osg::ref_ptr<VolumeScene> litBlock(Volume* volume, TransferFunction* tf, const char* shadowing,
-                                              const osg::Vec4& light = {0, 0, 1, 0})
-    {
-        osg::ref_ptr<VolumeNode> node = volumeNode(volume, tf);
-        node->settings.functions["Shading"] = "lighting";
-        node->settings.functions["Illumination"] = "lambert";
-        node->settings.functions["Shadowing"] = shadowing;
-        node->settings.ambient = 0.0;
-        node->settings.earlyTerminationThreshold = 1.0;
-        node->settings.sampleDistanceFactor = step;
-        osg::ref_ptr<VolumeScene> scene = new VolumeScene;
-        scene->addChild(node.get());
-        osg::ref_ptr<osg::LightSource> source = new osg::LightSource;
-        source->getLight()->setPosition(light);
-        scene->addChild(source.get());
-        return scene;
-    }
-
-    /// Sum over the view ray's segments i (front first, each `step` long) of the weight of
-    /// segment i in the unshadowed image times `shadow(i)`, over the sum of the weights alone.
-    static double expectedRatio(int first, const std::function<double(int)>& weight, const std::function<double(int)>& shadow)
-    {
-        const double sigma = -std::log1p(-alpha);
-        const double q = std::exp(-sigma * step);
-        double lit = 0.0, unlit = 0.0, transmittance = 1.0;
-        for (int i = first; i < int(depthVoxels / step); ++i) {
-            const double w = transmittance * (1.0 - q) * weight(i);
-            lit += w * shadow(i);
-            unlit += w;
-            transmittance *= q;
-        }
-        return lit / unlit;
-    }
 };
 
 TEST_F(Shadowing, AHomogeneousBlockLitFromTheViewerShadowsItselfByExpMinusSigmaS)
 {
     osg::ref_ptr<Volume> block = constantVolume(VoxelType::UInt8, {depthVoxels, depthVoxels, depthVoxels}, 100);
     osg::ref_ptr<TransferFunction> tf = constantTransferFunction(osg::Vec4(0.9f, 0.6f, 0.3f, float(alpha)));
-    const osg::Vec4 unlit = renderOrthoFromPlusZ(litBlock(block.get(), tf.get(), "null").get(), 8, 8, 32.0).at(4, 4);
-    osg::ref_ptr<VolumeScene> scene = litBlock(block.get(), tf.get(), "ray");
+    const osg::Vec4 unlit = renderOrthoFromPlusZ(lit(block.get(), tf.get(), "null").get(), 8, 8, 32.0).at(4, 4);
+    osg::ref_ptr<VolumeScene> scene = lit(block.get(), tf.get(), "ray");
     const osg::Vec4 shadowed = renderOrthoFromPlusZ(scene.get(), 8, 8, 32.0).at(4, 4);
     EXPECT_NE(scene->compositionKeys()[0].find("Shadowing=ray"), std::string::npos);
     const double sigma = -std::log1p(-alpha);
-    const double ratio = expectedRatio(0, [](int) { return 1.0; }, [&](int i) { return std::exp(-sigma * (i + 0.5) * step); });
+    const double ratio = expectedRatio(0, [&](int i) { return std::exp(-sigma * (i + 0.5) * step); });
     ASSERT_GT(unlit.r(), 0.1f);
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(shadowed[c] / unlit[c], ratio, 2e-4) << "channel " << c;
     EXPECT_NEAR(shadowed.a(), unlit.a(), 1e-6) << "shadows change light, not coverage";
@@ -77,7 +35,7 @@ TEST_F(Shadowing, AHomogeneousBlockLitFromTheViewerShadowsItselfByExpMinusSigmaS
     const double D = depthVoxels;
     EXPECT_NEAR(ratio, 0.5 * -std::expm1(-2 * sigma * D) / -std::expm1(-sigma * D), 2e-3);
     // A shorter shadow step changes nothing in a homogeneous medium (midpoint segments are exact).
-    scene = litBlock(block.get(), tf.get(), "ray");
+    scene = lit(block.get(), tf.get(), "ray");
     findVolumeNodes(*scene)[0]->settings.shadowStepFactor = 0.13;
     EXPECT_NEAR(renderOrthoFromPlusZ(scene.get(), 8, 8, 32.0).at(4, 4).r() / unlit.r(), ratio, 2e-4);
 }
@@ -91,8 +49,8 @@ TEST_F(Shadowing, ADarkSlabBetweenTheLightAndTheBlockLetsExpMinusSigmaDThrough)
     for (std::size_t i = 0; i < volume->voxelCount(); ++i) volume->data()[i] = i / (depthVoxels * depthVoxels) >= 12 ? 50 : 100;
     volume->dirty();
     osg::ref_ptr<TransferFunction> tf = transferFunction({{50, {0, 0, 0, float(alpha)}}, {100, {0.9f, 0.6f, 0.3f, float(alpha)}}}, 0, 255);
-    const osg::Vec4 unlit = renderOrthoFromPlusZ(litBlock(volume.get(), tf.get(), "null").get(), 8, 8, 32.0).at(4, 4);
-    const osg::Vec4 shadowed = renderOrthoFromPlusZ(litBlock(volume.get(), tf.get(), "ray").get(), 8, 8, 32.0).at(4, 4);
+    const osg::Vec4 unlit = renderOrthoFromPlusZ(lit(volume.get(), tf.get(), "null").get(), 8, 8, 32.0).at(4, 4);
+    const osg::Vec4 shadowed = renderOrthoFromPlusZ(lit(volume.get(), tf.get(), "ray").get(), 8, 8, 32.0).at(4, 4);
     // Segment i's midpoint is (i + 0.5) * step below the front face (z = 16 in voxel units); its
     // colour weight is the trilinear value's place between 50 and 100 (voxel centres at k + 0.5).
     auto weight = [](int i) {
@@ -102,7 +60,7 @@ TEST_F(Shadowing, ADarkSlabBetweenTheLightAndTheBlockLetsExpMinusSigmaDThrough)
         return 1.0 - front;
     };
     const double sigma = -std::log1p(-alpha);
-    const double ratio = expectedRatio(0, weight, [&](int i) { return std::exp(-sigma * (i + 0.5) * step); });
+    const double ratio = expectedRatio(0, [&](int i) { return std::exp(-sigma * (i + 0.5) * step); }, weight);
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(shadowed[c] / unlit[c], ratio, 5e-4) << "channel " << c;
     // The block behind the slab receives exp(-sigma * 4) of the light at its front: the ratio is
     // below that (deeper samples receive less).
@@ -114,7 +72,7 @@ TEST_F(Shadowing, ClippedAwayMaterialCastsNoShadow)
     osg::ref_ptr<Volume> block = constantVolume(VoxelType::UInt8, {depthVoxels, depthVoxels, depthVoxels}, 100);
     osg::ref_ptr<TransferFunction> tf = constantTransferFunction(osg::Vec4(0.9f, 0.6f, 0.3f, float(alpha)));
     auto clipped = [&](const char* shadowing) {
-        osg::ref_ptr<VolumeScene> scene = litBlock(block.get(), tf.get(), shadowing);
+        osg::ref_ptr<VolumeScene> scene = lit(block.get(), tf.get(), shadowing);
         osg::ref_ptr<ClipPlaneNode> plane = new ClipPlaneNode;
         plane->plane.set(0.0, 0.0, -1.0, 0.0);  // keeps z <= 0: the half nearest the light is gone
         scene->addChild(plane.get());
@@ -123,8 +81,7 @@ TEST_F(Shadowing, ClippedAwayMaterialCastsNoShadow)
     const osg::Vec4 unlit = renderOrthoFromPlusZ(clipped("null").get(), 8, 8, 32.0).at(4, 4);
     const double sigma = -std::log1p(-alpha);
     const int half = int(depthVoxels / step) / 2;
-    const double ratio = expectedRatio(half, [](int) { return 1.0; },
-                                       [&](int i) { return std::exp(-sigma * (i - half + 0.5) * step); });
+    const double ratio = expectedRatio(half, [&](int i) { return std::exp(-sigma * (i - half + 0.5) * step); });
     // Shadow samples are clipped one by one, so the plane is found to within a shadow step: a
     // fine step gives the exact ratio, the default one is within sigma * step of it.
     for (const double factor : {0.02, 1.0}) {
@@ -147,14 +104,14 @@ TEST_F(Shadowing, NoNaNForAxisDiagonalAndInsideLightsOrZeroGradients)
     const std::vector<osg::Vec4> lights = {{1, 0, 0, 0},  {0, -1, 0, 0},  {1, 1, 1, 0},      {-1, 1, -1, 0},
                                            {0, 0, 0, 1},  {3, -2, 5, 1},  {0, 0, 100, 1},   {8, 8, 8, 1}};
     for (const osg::Vec4& light : lights) {
-        const Pixels img = renderOrthoFromPlusZ(litBlock(block.get(), tf.get(), "ray", light).get(), 16, 16, 32.0);
+        const Pixels img = renderOrthoFromPlusZ(lit(block.get(), tf.get(), "ray", 1.0, {light}).get(), 16, 16, 32.0);
         for (const osg::Vec4& p : img.rgba)
             for (int c = 0; c < 4; ++c)
                 ASSERT_TRUE(std::isfinite(p[c]) && p[c] >= 0.0f && p[c] <= 1.0f)
                     << "light " << light.x() << "," << light.y() << "," << light.z() << "," << light.w();
     }
     // A point light at the block's centre: the samples above it receive exp(-sigma * distance).
-    const osg::Vec4 inside = renderOrthoFromPlusZ(litBlock(block.get(), tf.get(), "ray", {0, 0, 0, 1}).get(), 8, 8, 32.0).at(4, 4);
+    const osg::Vec4 inside = renderOrthoFromPlusZ(lit(block.get(), tf.get(), "ray", 1.0, {{0, 0, 0, 1}}).get(), 8, 8, 32.0).at(4, 4);
     EXPECT_GT(inside.r(), 0.0f);
 }
 
@@ -163,7 +120,7 @@ TEST_F(Shadowing, HenyeyGreensteinScalesEachLightByThePhaseFunction)
     osg::ref_ptr<Volume> block = constantVolume(VoxelType::UInt8, {depthVoxels, depthVoxels, depthVoxels}, 100);
     osg::ref_ptr<TransferFunction> tf = constantTransferFunction(osg::Vec4(0.9f, 0.6f, 0.3f, float(alpha)));
     auto pixel = [&](const char* illumination, double g, const osg::Vec4& light) {
-        osg::ref_ptr<VolumeScene> scene = litBlock(block.get(), tf.get(), "ray", light);
+        osg::ref_ptr<VolumeScene> scene = lit(block.get(), tf.get(), "ray", 1.0, {light});
         VolumeNode* node = findVolumeNodes(*scene)[0];
         node->settings.functions["Illumination"] = illumination;
         node->settings.anisotropy = g;
