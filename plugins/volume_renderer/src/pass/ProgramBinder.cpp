@@ -1,7 +1,6 @@
 #include "ProgramBinder.h"
 
-#include "../resources/LightVolume.h"
-#include "../resources/OpacityMipChain.h"
+#include "../resources/BuiltVolumeKinds.h"
 
 #include <volume_renderer/GraphicsDriver.h>
 #include <volume_renderer/SampleDistance.h>
@@ -11,7 +10,6 @@
 #include <cmath>
 #include <cstdio>
 #include <set>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -105,53 +103,51 @@ std::optional<BrickHidingRule> hidingFor(const BindContext& context, const std::
                            .mayShow = classification->mayShow(context)};
 }
 
-/// Everything a built volume's build reads, as text: the values of the uniforms and the textures
-/// of the implementations its program composes (storage, reconstruction, classification, clip
-/// shapes, shadowing), the volume's and the TF's identity and modified counts, and the lights
-/// when `lights` (a light volume; an opacity mip chain does not depend on them).
-std::string builtVolumeKey(const BindContext& context, const std::vector<const Binding*>& bindings, bool lights)
+/// Everything a built volume of `kind` reads, as bytes compared with the last build's: the
+/// build program, the volume's and the TF's identity and modified counts, the level, resident
+/// bricks, the lights where the kind reads them, and the values of the uniforms and the
+/// textures of the implementations its program composes (storage, reconstruction,
+/// classification, clip shapes, shadowing) but its own.
+std::string builtVolumeKey(const BindContext& context, const std::vector<const Binding*>& bindings,
+                           const BuiltVolumeKind& kind, const osg::Program* program)
 {
     static const std::set<std::string> read = {"VolumeStorage", "Reconstruction", "Classification", "ClipPosition",
                                                "Shadowing"};
-    std::ostringstream key;
-    key << &context.volume << ' ' << context.volume.modifiedCount() << ' ' << &context.transfer << ' '
-        << context.transfer.modifiedCount() << ' ' << context.lod;
-    char number[40];
-    auto put = [&](double v) {
-        std::snprintf(number, sizeof(number), " %a", v);
-        key << number;
+    std::string key;
+    key.reserve(256);
+    auto put = [&key](const auto& value) { key.append(reinterpret_cast<const char*>(&value), sizeof(value)); };
+    auto putArray = [&key](const osg::Array* a) {
+        if (a) key.append(static_cast<const char*>(a->getDataPointer()), a->getTotalDataSize());
     };
+    put(program);
+    put(&context.volume);
+    put(context.volume.modifiedCount());
+    put(&context.transfer);
+    put(context.transfer.modifiedCount());
+    put(context.lod);
     if (context.bricks && context.bricks->pageTable->getImage())  // bricks became resident
-        key << " pages " << context.bricks->pageTable->getImage()->getModifiedCount();
-    if (lights)
-        for (const LightInfo& light : context.lights)
-            for (int i = 0; i < 4; ++i) put(light.position[i]);
+        put(context.bricks->pageTable->getImage()->getModifiedCount());
+    if (kind.readsLights)
+        for (const LightInfo& light : context.lights) put(light.position);
     for (const Binding* b : bindings) {
         if (!read.count(b->function->slot)) continue;
         for (const UniformDecl& u : b->function->uniforms) {
             const std::string name = (u.shared ? u.name : u.name + b->suffix) + b->memberSuffix;
             const osg::Uniform* uniform = context.stateSet.getUniform(name);
-            if (!uniform || (!lights && name.rfind("volren_light", 0) == 0)) continue;
-            key << ' ' << name;
-            if (const osg::FloatArray* a = uniform->getFloatArray())
-                for (float v : *a) put(v);
-            if (const osg::DoubleArray* a = uniform->getDoubleArray())
-                for (double v : *a) put(v);
-            if (const osg::IntArray* a = uniform->getIntArray())
-                for (int v : *a) key << ' ' << v;
-            if (const osg::UIntArray* a = uniform->getUIntArray())
-                for (unsigned int v : *a) key << ' ' << v;
+            if (!uniform || (!kind.readsLights && name.rfind("volren_light", 0) == 0)) continue;
+            putArray(uniform->getFloatArray());
+            putArray(uniform->getDoubleArray());
+            putArray(uniform->getIntArray());
+            putArray(uniform->getUIntArray());
         }
         for (const TextureDecl& t : b->function->textures) {
             const std::string name = (t.shared ? t.name : t.name + b->suffix) + b->memberSuffix;
             auto unit = context.textureUnits.find(name);
-            if (unit == context.textureUnits.end() || name.rfind("volren_lightVolume", 0) == 0 ||
-                name.rfind("volren_opacityMips", 0) == 0)
-                continue;  // what is built
-            key << ' ' << name << ' ' << context.stateSet.getTextureAttribute(unsigned(unit->second), osg::StateAttribute::TEXTURE);
+            if (unit == context.textureUnits.end() || name.rfind(kind.sampler, 0) == 0) continue;  // what is built
+            put(context.stateSet.getTextureAttribute(unsigned(unit->second), osg::StateAttribute::TEXTURE));
         }
     }
-    return key.str();
+    return key;
 }
 
 }  // namespace
@@ -205,13 +201,10 @@ bool bindProgram(BindContext& context, const ComposedProgram& program,
         context.aux[AuxData::MacrocellRanges] = textures.ranges(context.volume, shape.cellSize, shape.apron, cull);
     }
     const osg::Vec3i levelDims = mipDims(context.volume.dims(), context.lod);
-    if (needs(AuxData::LightVolume))
-        context.aux[AuxData::LightVolume] = textures.builtVolumes().texture(
-            &context.node, AuxData::LightVolume, lightVolumeDims(levelDims, context.settings.lightVolumeScale),
-            lightVolumeChannels(context.lights.size()), false, cull);
-    if (needs(AuxData::OpacityMipChain))
-        context.aux[AuxData::OpacityMipChain] =
-            textures.builtVolumes().texture(&context.node, AuxData::OpacityMipChain, levelDims, 1, true, cull);
+    for (const BuiltVolumeKind& kind : builtVolumeKinds())
+        if (needs(kind.aux))
+            context.aux[kind.aux] = textures.builtVolumes().texture(&context.node, kind.aux, kind.dims(levelDims, context),
+                                                                    kind.channels(context), kind.mipmapped, cull);
 
     static const std::vector<ClipInfo> none;
     for (const Binding* b : mine) {
@@ -227,18 +220,15 @@ bool bindProgram(BindContext& context, const ComposedProgram& program,
     // A built volume is rebuilt, before the ray caster draws, when what its build reads changed.
     if (program.buildProgram) {
         const osg::Vec3d box = context.boxSize.length2() > 0.0 ? context.boxSize : context.volume.worldSize();
-        osg::Node* build = nullptr;
-        if (needs(AuxData::LightVolume)) {
-            const osg::Texture3D& t = static_cast<const osg::Texture3D&>(*context.aux.at(AuxData::LightVolume));
+        for (const BuiltVolumeKind& kind : builtVolumeKinds()) {
+            if (!needs(kind.aux)) continue;
+            const osg::Texture3D& t = static_cast<const osg::Texture3D&>(*context.aux.at(kind.aux));
             const osg::Vec3i dims(t.getTextureWidth(), t.getTextureHeight(), t.getTextureDepth());
-            build = textures.builtVolumes().build(&context.node, AuxData::LightVolume, builtVolumeKey(context, mine, true),
-                                                  program.buildProgram.get(), lightVolumePlan(context.lights, box, dims));
-        } else if (needs(AuxData::OpacityMipChain)) {
-            build = textures.builtVolumes().build(&context.node, AuxData::OpacityMipChain,
-                                                  builtVolumeKey(context, mine, false), program.buildProgram.get(),
-                                                  opacityVolumePlan(levelDims));
+            if (osg::Node* build = textures.builtVolumes().build(&context.node, kind.aux,
+                                                                 builtVolumeKey(context, mine, kind, program.buildProgram.get()),
+                                                                 program.buildProgram.get(), kind.plan(context, box, dims)))
+                context.prepasses.push_back(build);
         }
-        if (build) context.prepasses.push_back(build);
     }
     return anyVisible;
 }

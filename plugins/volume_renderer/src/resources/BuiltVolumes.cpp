@@ -2,6 +2,7 @@
 // composition's compute program in the dispatches its plan lists (mip levels too: the driver's
 // mipmap generation may blend the zero border into edge texels, so the plan writes them).
 #include "BuiltVolumes.h"
+#include "BuiltVolumeKinds.h"
 
 #include <volume_model/Volume.h>
 #include <volume_model/VolumeNode.h>
@@ -109,11 +110,6 @@ private:
     mutable bool _warned = false;
     mutable std::set<unsigned int> _allocated;  ///< contexts where the levels have storage
 };
-
-const char* kindName(AuxData kind)
-{
-    return kind == AuxData::LightVolume ? "light volume" : "opacity mip chain";
-}
 
 }  // namespace
 
@@ -231,7 +227,7 @@ std::vector<BuiltVolumeStatistics> BuiltVolumes::statistics(unsigned int cull) c
     for (const auto& [key, e] : _entries) {
         if (e->lastCull != cull || !e->texture) continue;
         const osg::Vec3i dims(e->texture->getTextureWidth(), e->texture->getTextureHeight(), e->texture->getTextureDepth());
-        out.push_back({e->name, kindName(key.second), dims, e->channels, e->bytes(), e->voxels, e->build->builds(),
+        out.push_back({e->name, builtVolumeKind(key.second)->name, dims, e->channels, e->bytes(), e->voxels, e->build->builds(),
                        e->build->lastSeconds()});
     }
     return out;
