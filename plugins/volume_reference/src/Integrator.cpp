@@ -40,6 +40,7 @@ Medium mediumOf(const ReferenceScene& scene, const ReferenceScene::Placed& place
     if (m.shadows != ReferenceScene::Shadows::None && lightCount > 0 && m.shading != Shading::None) {
         for (const Clip& c : clips) m.clips.push_back({c.node, m.localToWorld * c.toShape});
         m.findEmptyBlocks();
+        if (scene.occluders) m.occluders = &scene;
     }
     for (std::size_t i = 0; i < lightCount; ++i) {
         const auto& source = static_cast<const osg::LightSource&>(*scene.lights[i].node);

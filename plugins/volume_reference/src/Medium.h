@@ -78,6 +78,9 @@ struct Medium
     double occlusionStart = 0.0, occlusionDistance = 0.0;
     osg::Matrixd localToWorld;
     std::vector<Clip> clips;  ///< the clip shapes that apply, from local coordinates
+    /// With exact shadows: the scene whose opaque triangles (ReferenceScene::occluders) block a
+    /// light wholly where they cross the way from the sample to it; null: none.
+    const ReferenceScene* occluders = nullptr;
     /// Shadow rays' empty-space test, per block of 4^3 trilinear cells: whether the TF gives
     /// every value the field takes there opacity 0 (their samples would add nothing).
     std::vector<unsigned char> emptyBlocks;
@@ -102,6 +105,9 @@ struct Medium
     /// min(`distance`, the way out of the box): exp(-the integral of the extinction, in world
     /// lengths as the view ray's), converged; 0 past an opaque (α >= 1) point, 1 for no path.
     double transmittance(const glm::dvec3& local, const glm::dvec3& l, double distance, ShadowTally& tally) const;
+    /// Whether opaque geometry blocks the way from local point `local` to the light at local
+    /// `position` (w = 0: the direction towards it).
+    bool blocked(const glm::dvec3& local, const glm::dvec4& position) const;
     /// The ambient occlusion at local point `local` around the unit `normal` (see `occlusion`).
     double ambientOcclusion(const glm::dvec3& local, const glm::dvec3& normal, ShadowTally& tally) const;
     /// Fills emptyBlocks from the volume and the TF.

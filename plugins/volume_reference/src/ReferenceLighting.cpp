@@ -32,6 +32,7 @@ glm::dvec3 Medium::shade(const glm::dvec3& tc, const glm::dvec3& local, const gl
         const glm::dvec3 term = lightColour * illuminate(normal, view, toLight / length, albedo);
         // Exact shadows: the light's term times the transmittance to it (none where it adds nothing).
         if (shadows == ReferenceScene::Shadows::None || term == glm::dvec3(0.0)) colour += term;
+        else if (blocked(local, position)) continue;  // opaque geometry in the way
         else
             colour += term * transmittance(local, toLight / length,
                                            position.w == 0.0 ? std::numeric_limits<double>::infinity() : length, tally);

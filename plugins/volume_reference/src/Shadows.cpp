@@ -153,4 +153,17 @@ double Medium::transmittance(const glm::dvec3& local, const glm::dvec3& l, doubl
     }
 }
 
+bool Medium::blocked(const glm::dvec3& local, const glm::dvec4& position) const
+{
+    if (!occluders || !occluders->occluders) return false;
+    const osg::Vec3d from = osg::Vec3d(local.x, local.y, local.z) * localToWorld;
+    const osg::Vec3d p(position.x, position.y, position.z);
+    if (position.w != 0.0) return occluders->occluded(from, p * localToWorld);
+    osg::Vec3d towards = osg::Matrixd::transform3x3(p, localToWorld);  // the local direction's image
+    towards.normalize();
+    const osg::BoundingSphere& bound = occluders->occluders->getBound();
+    const double reach = (osg::Vec3d(bound.center()) - from).length() + bound.radius() + 1.0;
+    return occluders->occluded(from, from + towards * reach);
+}
+
 }  // namespace volren::reference

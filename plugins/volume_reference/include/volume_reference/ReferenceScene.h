@@ -2,6 +2,7 @@
 #include <volume_model/ClipNode.h>
 #include <volume_model/VolumeNode.h>
 
+#include <osg/Geometry>
 #include <osg/Matrixd>
 #include <osg/Node>
 
@@ -43,9 +44,15 @@ struct ReferenceScene
     /// osg::LightSources with a light; ABSOLUTE_RF ones keep eye coordinates (localToWorld is
     /// then the identity and the camera places them).
     std::vector<Placed> lights;
+    /// The opaque geometry's triangles in world coordinates (drawables that are not drawn after
+    /// the opaque bin, outside volume and clip nodes), with a k-d tree; null when there are none.
+    osg::ref_ptr<osg::Geometry> occluders;
 
-    /// Collects the volumes, clip shapes and lights below `root` (all children, whatever their
-    /// masks).
+    /// Whether the segment from world point `from` to `to` crosses an opaque triangle.
+    bool occluded(const osg::Vec3d& from, const osg::Vec3d& to) const;
+
+    /// Collects the volumes, clip shapes, lights and opaque triangles below `root` (all children,
+    /// whatever their masks).
     static ReferenceScene collect(const osg::Node& root);
 };
 
