@@ -6,7 +6,8 @@
 // float volren_occlusion(vec3 pos, vec3 normal)
 float volren_shadow(vec3 pos, vec3 lightDir, float lightDistance, int light)
 {
-    return exp(-volren_coneDepth(pos, lightDir, lightDistance, tan(0.5 * volren_coneAngle)));
+    return exp(-volren_coneDepth(pos, lightDir, lightDistance, tan(0.5 * volren_coneAngle))) *
+           volren_geometryLight(pos, light);
 }
 
 float volren_occlusion(vec3 pos, vec3 normal)

@@ -4,14 +4,15 @@
 // homogeneous medium gives exp(-sigma*L) at any step); the optical depth of each is corrected
 // for its length like the view ray's. Clipped-away samples (every clip shape is per sample when
 // this shadowing is chosen) cast no shadow. The march stops once the transmittance falls below
-// volren_shadowCutoff, returning what it has reached.
+// volren_shadowCutoff, returning what it has reached. Opaque geometry between the sample and the
+// light stops the light (Shadowing/geometry_shadow.glsl).
 // float volren_shadow(vec3 pos, vec3 lightDir, float lightDistance, int light)
 float volren_shadow(vec3 pos, vec3 lightDir, float lightDistance, int light)
 {
     vec3 dirTex = lightDir / volren_worldSize;  // texture space per world unit
     float exitDistance = volren_boxExit(pos, dirTex);
     float len = min(exitDistance, lightDistance);
-    if (!(len > 0.0) || !(volren_shadowStep > 0.0)) return 1.0;
+    if (!(len > 0.0) || !(volren_shadowStep > 0.0)) return volren_geometryLight(pos, light);
     int count = int(min(ceil(len / volren_shadowStep), 16384.0));
     float h = len / float(count);
     float ratio = h / volren_referenceStep;
@@ -22,7 +23,7 @@ float volren_shadow(vec3 pos, vec3 lightDir, float lightDistance, int light)
         depth += volren_opticalDepth(volren_classify(volren_fetchScalar(p)).a, ratio);
         if (depth >= volren_shadowCutoffDepth) break;
     }
-    return exp(-depth);
+    return exp(-depth) * volren_geometryLight(pos, light);
 }
 
 // No ambient occlusion.

@@ -1,5 +1,6 @@
 #pragma once
 #include <osg/Matrixd>
+#include <osg/Matrixf>
 #include <osg/Node>
 
 #include <optional>
@@ -42,6 +43,10 @@ struct RenderSettings;
 ///   sampled level, as a half-float 3D texture with a full mip chain (box-filtered on the GPU,
 ///   zero outside the box), built by the implementation's build program when the TF, the volume
 ///   or a clip shape changes (cone tracing).
+/// - GeometryShadowMap: per scene, the depth of its opaque geometry seen from each light (up to
+///   four; a 2D array texture compared LEQUAL, one layer per light) over the boxes of the
+///   volumes that read it, drawn before the frame by the pass; with
+///   BindContext::geometryShadowMatrices (shadowing methods: polygons shadow volumes).
 enum class AuxData
 {
     VolumeTexture,
@@ -55,7 +60,8 @@ enum class AuxData
     HomogeneityGrid,
     BrickPool,
     LightVolume,
-    OpacityMipChain
+    OpacityMipChain,
+    GeometryShadowMap
 };
 
 struct BrickedVolume;
@@ -108,6 +114,9 @@ struct BindContext
     osg::Matrixd setToMember = {};
     /// GPU builds of auxiliary data to draw before the ray caster, under its state.
     std::vector<osg::ref_ptr<osg::Node>> prepasses = {};
+    /// Volume texture space -> each light's GeometryShadowMap coordinates ([0,1]^2 and depth; a
+    /// zero matrix where no map covers that light). Empty: no opaque geometry shadows the volume.
+    std::vector<osg::Matrixd> geometryShadowMatrices = {};
 
     /// Name of `base` for the instance being bound (adds the template and member suffixes).
     std::string name(const std::string& base) const { return base + suffix + member; }
@@ -157,6 +166,7 @@ private:
     static std::string glslTypeOf(float) { return "float"; }
     static std::string glslTypeOf(const osg::Vec3f&) { return "vec3"; }
     static std::string glslTypeOf(const osg::Vec4f&) { return "vec4"; }
+    static std::string glslTypeOf(const osg::Matrixf&) { return "mat4"; }
 };
 
 }  // namespace volren

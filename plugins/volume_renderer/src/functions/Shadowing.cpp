@@ -6,6 +6,7 @@
 #include <volume_model/RenderSettings.h>
 #include <volume_model/Volume.h>
 
+#include <osg/Texture2DArray>
 #include <osg/Texture3D>
 
 #include <algorithm>
@@ -15,6 +16,55 @@ namespace volren {
 
 using bindings::operator+;
 
+namespace {
+
+/// Every shadowing method reads the opaque geometry's shadow maps (Shadowing/geometry_shadow.glsl).
+const std::vector<UniformDecl> geometryShadowUniforms = {{"volren_geometryShadowCount", "int", ""},
+                                                         {"volren_geometryShadowMatrix", "mat4", "4"},
+                                                         {"volren_geometryShadowBias", "float", "4"}};
+const TextureDecl geometryShadowTexture = {"volren_geometryShadow", "sampler2DArrayShadow"};
+
+/// The maps' matrices from the volume's texture space and their depth bias (half a voxel along the
+/// volume's axis where the map's depth changes fastest, in map depth at the box's centre), or
+/// none to read (no opaque geometry).
+void bindGeometryShadows(BindContext& c)
+{
+    const std::vector<osg::Matrixd>& maps = c.geometryShadowMatrices;
+    auto map = c.aux.find(AuxData::GeometryShadowMap);
+    const int count = map == c.aux.end() ? 0 : int(std::min<std::size_t>(maps.size(), 4));
+    c.uniform("volren_geometryShadowCount", count);
+    for (int i = 0; i < count; ++i) {
+        c.uniformElement("volren_geometryShadowMatrix", 4, unsigned(i), osg::Matrixf(maps[std::size_t(i)]));
+        // Depth per texture unit along the light at this point: the map's depth slope, from the
+        // matrix's third row against its fourth (w), at the box centre.
+        const osg::Matrixd& m = maps[std::size_t(i)];
+        const osg::Vec4d centre = osg::Vec4d(0.5, 0.5, 0.5, 1.0) * m;
+        float bias = 0.0f;
+        if (centre.w() > 0.0) {
+            double slope = 0.0;
+            for (int a = 0; a < 3; ++a) {
+                const double dz = (m(a, 2) * centre.w() - centre.z() * m(a, 3)) / (centre.w() * centre.w());
+                slope = std::max(slope, std::abs(dz) / c.volume.dims()[a]);  // per voxel along axis a
+            }
+            bias = float(0.5 * slope);
+        }
+        c.uniformElement("volren_geometryShadowBias", 4, unsigned(i), bias);
+    }
+    // A sampler must name a texture of its type on its own unit even where it is never read.
+    static const osg::ref_ptr<osg::Texture2DArray> none = [] {
+        osg::ref_ptr<osg::Texture2DArray> t = new osg::Texture2DArray;
+        t->setInternalFormat(GL_DEPTH_COMPONENT32F);
+        t->setSourceFormat(GL_DEPTH_COMPONENT);
+        t->setSourceType(GL_FLOAT);
+        t->setShadowComparison(true);
+        t->setTextureSize(1, 1, 1);
+        return t;
+    }();
+    c.texture("volren_geometryShadow", count > 0 ? map->second.get() : none.get());
+}
+
+}  // namespace
+
 void registerShadowingFunctions(ShaderFunctionRegistry& registry)
 {
     registry.add({.slot = "Shadowing", .name = "null", .traits = {.calls = SlotList{}}});
@@ -22,12 +72,17 @@ void registerShadowingFunctions(ShaderFunctionRegistry& registry)
     // Shadow rays: a march towards each light per lit sample, with the view ray's sampling.
     registry.add({.slot = "Shadowing",
                   .name = "ray",
-                  .uniforms = bindings::geometry + std::vector<UniformDecl>{{"volren_shadowStep", "float", ""},
-                                                                            {"volren_referenceStep", "float", ""},
-                                                                            {"volren_shadowCutoffDepth", "float", ""}},
+                  .includes = {"Shadowing/geometry_shadow.glsl"},
+                  .uniforms = bindings::geometry + geometryShadowUniforms +
+                              std::vector<UniformDecl>{{"volren_shadowStep", "float", ""},
+                                                       {"volren_referenceStep", "float", ""},
+                                                       {"volren_shadowCutoffDepth", "float", ""}},
+                  .textures = {geometryShadowTexture},
+                  .needs = {AuxData::GeometryShadowMap},
                   .bind =
                       [](BindContext& c) {
                           bindings::bindGeometry(c);
+                          bindGeometryShadows(c);
                           c.uniform("volren_shadowStep", float(c.sampleDistance * c.settings.shadowStepFactor));
                           c.uniform("volren_referenceStep", float(c.volume.minSpacing()));
                           const double cutoff = c.settings.shadowCutoff;
@@ -44,13 +99,15 @@ void registerShadowingFunctions(ShaderFunctionRegistry& registry)
     registry.add({.slot = "Shadowing",
                   .name = "light_volume",
                   .buildFile = "Shadowing/light_volume_build.comp",
-                  .uniforms = bindings::geometry + bindings::lights +
+                  .includes = {"Shadowing/geometry_shadow.glsl"},
+                  .uniforms = bindings::geometry + bindings::lights + geometryShadowUniforms +
                               std::vector<UniformDecl>{{"volren_shadowStep", "float", ""}, {"volren_referenceStep", "float", ""}},
-                  .textures = {{"volren_lightVolume", "sampler3D"}},
-                  .needs = {AuxData::LightVolume},
+                  .textures = {{"volren_lightVolume", "sampler3D"}, geometryShadowTexture},
+                  .needs = {AuxData::LightVolume, AuxData::GeometryShadowMap},
                   .bind =
                       [](BindContext& c) {
                           bindings::bindGeometry(c);
+                          bindGeometryShadows(c);
                           // The build integrates the full-resolution classification along each
                           // path at the view ray's step (times the shadow step factor).
                           c.uniform("volren_shadowStep", float(c.sampleDistance * c.settings.shadowStepFactor));
@@ -66,7 +123,7 @@ void registerShadowingFunctions(ShaderFunctionRegistry& registry)
     // ambient occlusion (cone_ao). The chain is built on the GPU (cone_build.comp, then
     // box-filtered levels) when the TF, the volume or a clip shape changes; lights are free.
     const std::vector<UniformDecl> coneUniforms =
-        bindings::geometry + std::vector<UniformDecl>{{"volren_shadowStep", "float", ""},
+        bindings::geometry + geometryShadowUniforms + std::vector<UniformDecl>{{"volren_shadowStep", "float", ""},
                                                       {"volren_referenceStep", "float", ""},
                                                       {"volren_shadowCutoffDepth", "float", ""},
                                                       {"volren_coneVoxel", "float", ""},
@@ -77,6 +134,7 @@ void registerShadowingFunctions(ShaderFunctionRegistry& registry)
                                                       {"volren_aoDistance", "float", ""}};
     auto bindCone = [](BindContext& c) {
         bindings::bindGeometry(c);
+        bindGeometryShadows(c);
         c.uniform("volren_shadowStep", float(c.sampleDistance * c.settings.shadowStepFactor));
         c.uniform("volren_referenceStep", float(c.volume.minSpacing()));
         const double cutoff = c.settings.shadowCutoff;
@@ -98,10 +156,10 @@ void registerShadowingFunctions(ShaderFunctionRegistry& registry)
         registry.add({.slot = "Shadowing",
                       .name = name,
                       .buildFile = "Shadowing/cone_build.comp",
-                      .includes = {"Shadowing/cone_march.glsl"},
+                      .includes = {"Shadowing/geometry_shadow.glsl", "Shadowing/cone_march.glsl"},
                       .uniforms = coneUniforms,
-                      .textures = {{"volren_opacityMips", "sampler3D"}},
-                      .needs = {AuxData::OpacityMipChain},
+                      .textures = {{"volren_opacityMips", "sampler3D"}, geometryShadowTexture},
+                      .needs = {AuxData::OpacityMipChain, AuxData::GeometryShadowMap},
                       .bind = bindCone,
                       .traits = {.calls = SlotList{"Reconstruction", "Classification", "ClipPosition"},
                                  .clipsPerSample = true,

@@ -18,7 +18,7 @@ namespace volren {
 BindContext bindContextFor(const VolumeCandidate& candidate, osg::StateSet& stateSet, const ComposedProgram& program)
 {
     const VolumeNode& node = *candidate.node;
-    return BindContext{.node = node,
+    BindContext context{.node = node,
                        .volume = *node.getVolume(),
                        .transfer = *node.getTransferFunction(),
                        .settings = node.settings,
@@ -29,6 +29,9 @@ BindContext bindContextFor(const VolumeCandidate& candidate, osg::StateSet& stat
                        .textureUnits = program.textureUnits,
                        .textureToClip = candidate.textureToClip,
                        .boxSize = node.getVolume()->worldSize()};
+    context.geometryShadowMatrices = candidate.geometryShadowMatrices;
+    if (candidate.geometryShadowMap) context.aux[AuxData::GeometryShadowMap] = candidate.geometryShadowMap;
+    return context;
 }
 
 namespace {
@@ -135,6 +138,7 @@ std::string builtVolumeKey(const BindContext& context, const std::vector<const B
             const std::string name = (u.shared ? u.name : u.name + b->suffix) + b->memberSuffix;
             const osg::Uniform* uniform = context.stateSet.getUniform(name);
             if (!uniform || (!kind.readsLights && name.rfind("volren_light", 0) == 0)) continue;
+            if (name.rfind("volren_geometryShadow", 0) == 0) continue;  // the ray caster's, never a build's
             putArray(uniform->getFloatArray());
             putArray(uniform->getDoubleArray());
             putArray(uniform->getIntArray());
@@ -143,7 +147,9 @@ std::string builtVolumeKey(const BindContext& context, const std::vector<const B
         for (const TextureDecl& t : b->function->textures) {
             const std::string name = (t.shared ? t.name : t.name + b->suffix) + b->memberSuffix;
             auto unit = context.textureUnits.find(name);
-            if (unit == context.textureUnits.end() || name.rfind(kind.sampler, 0) == 0) continue;  // what is built
+            if (unit == context.textureUnits.end() || name.rfind(kind.sampler, 0) == 0 ||
+                name.rfind("volren_geometryShadow", 0) == 0)
+                continue;  // what is built, and what only the ray caster reads
             put(context.stateSet.getTextureAttribute(unsigned(unit->second), osg::StateAttribute::TEXTURE));
         }
     }

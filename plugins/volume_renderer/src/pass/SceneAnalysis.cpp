@@ -1,6 +1,7 @@
 #include "SceneAnalysis.h"
 
 #include <volume_model/ClipNode.h>
+#include <volume_model/OpaqueGeometry.h>
 
 #include <osg/Drawable>
 #include <osg/LightSource>
@@ -26,11 +27,11 @@ public:
 
     void apply(osg::Drawable& drawable) override
     {
-        if (_transparent == 0 && !isTransparent(drawable.getStateSet())) opaqueGeometry = true;
+        if (_transparent == 0 && !drawnAfterOpaque(drawable.getStateSet())) opaqueGeometry = true;
     }
     void apply(osg::Node& node) override
     {
-        const bool transparent = isTransparent(node.getStateSet());
+        const bool transparent = drawnAfterOpaque(node.getStateSet());
         _transparent += transparent;
         visit(node);
         _transparent -= transparent;
@@ -49,12 +50,6 @@ public:
     }
 
 private:
-    /// Whether state puts what it applies to after the opaque bin (blended geometry).
-    static bool isTransparent(const osg::StateSet* ss)
-    {
-        return ss && (ss->getRenderingHint() == osg::StateSet::TRANSPARENT_BIN ||
-                      (ss->getRenderBinMode() != osg::StateSet::INHERIT_RENDERBIN_DETAILS && ss->getBinNumber() > 0));
-    }
     void visit(osg::Node& node)
     {
         if (auto* v = dynamic_cast<VolumeNode*>(&node)) {

@@ -1,3 +1,4 @@
+#include "GeometryShadows.h"
 #include "LevelOfDetail.h"
 #include "MultiVolumeSet.h"
 #include "ProgramBinder.h"
@@ -24,6 +25,7 @@ struct VolumeScene::Pass
 {
     ScreenPasses screen;
     TextureCache textures;
+    GeometryShadowMaps geometryShadows;  ///< the opaque geometry's depth from each light
     std::map<const VolumeNode*, VolumeProxy> proxies;
     std::map<std::vector<const VolumeNode*>, VolumeProxy> sets;  ///< multi-volume sets, by member
     std::set<std::vector<const VolumeNode*>> warnedOverlaps;
@@ -146,6 +148,7 @@ void VolumeScene::traverse(osg::NodeVisitor& nv)
     ++p.cull;
     p.screen.beginCull(*cv, p.cull);
     p.textures.setBrickStreaming(std::size_t(pass.uploadBudgetMB * 1048576.0), !pass.streamBricks);
+    cullGeometryShadows(*cv, *this, candidates, chosen, p.geometryShadows);
     std::set<std::string> keys;
     for (const RayGroup& group : _policy.rayGroups(bounds, compositions, forcedComposition.has_value())) {
         std::vector<const VolumeNode*> nodes;

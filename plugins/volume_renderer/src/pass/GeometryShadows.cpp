@@ -1,0 +1,61 @@
+#include "GeometryShadows.h"
+
+#include <volume_renderer/ShaderFunctionRegistry.h>
+
+namespace volren {
+
+namespace {
+
+/// Whether the Shadowing of `composition` (or of a set member) reads the geometry shadow maps.
+bool readsGeometryShadows(const Composition& composition)
+{
+    if (composition.lightCount == 0) return false;
+    const ShaderFunction* f = ShaderFunctionRegistry::instance().find("Shadowing", composition.functionFor("Shadowing"));
+    if (f && f->needsAux(AuxData::GeometryShadowMap)) return true;
+    for (const Composition& member : composition.members)
+        if (readsGeometryShadows(member)) return true;
+    return false;
+}
+
+/// `candidate`'s lights in the VolumeScene's coordinates (the offer holds them in the node's).
+std::vector<LightInfo> sceneLights(const VolumeCandidate& candidate)
+{
+    std::vector<LightInfo> out = candidate.offer.lights;
+    for (LightInfo& light : out) {
+        const osg::Vec4d& p = light.position;
+        if (p.w() == 0.0) {
+            osg::Vec3d d = osg::Matrixd::transform3x3(osg::Vec3d(p.x(), p.y(), p.z()), candidate.matrix);
+            d.normalize();
+            light.position = osg::Vec4d(d, 0.0);
+        } else {
+            light.position = osg::Vec4d(osg::Vec3d(p.x(), p.y(), p.z()) * candidate.matrix, 1.0);
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
+void cullGeometryShadows(osgUtil::CullVisitor& cv, osg::Group& scene, std::vector<VolumeCandidate>& candidates,
+                         const std::vector<ChosenComposition>& chosen, GeometryShadowMaps& maps)
+{
+    std::vector<std::size_t> readers;
+    osg::BoundingBoxd receivers;
+    for (std::size_t i = 0; i < candidates.size(); ++i) {
+        const VolumeCandidate& c = candidates[i];
+        if (!c.offer.opaqueGeometry || c.offer.lights.empty() || !readsGeometryShadows(chosen[i].composition)) continue;
+        readers.push_back(i);
+        receivers.expandBy(c.bound);
+    }
+    if (readers.empty()) return;
+    maps.cull(cv, scene, sceneLights(candidates[readers.front()]), receivers);
+    for (std::size_t i : readers) {
+        VolumeCandidate& c = candidates[i];
+        const osg::Matrixd textureToScene = textureToLocal(*c.node->getVolume()) * c.matrix;
+        c.geometryShadowMatrices.clear();
+        for (const osg::Matrixd& m : maps.matrices()) c.geometryShadowMatrices.push_back(textureToScene * m);
+        c.geometryShadowMap = maps.texture();
+    }
+}
+
+}  // namespace volren

@@ -1,0 +1,43 @@
+#pragma once
+// Internal to the pass: the depth maps of a VolumeScene's opaque geometry seen from each light
+// (AuxData::GeometryShadowMap), through which the shadowing methods let polygons between a
+// light and a volume shadow it.
+#include <volume_renderer/BindContext.h>
+
+#include <osg/BoundingBox>
+#include <osg/Camera>
+#include <osg/Group>
+#include <osg/Texture2DArray>
+#include <osgUtil/CullVisitor>
+
+#include <vector>
+
+namespace volren {
+
+/// One depth layer per light (the first four) of the opaque geometry below a VolumeScene,
+/// drawn by pre-render cameras each frame the shadowing volumes are drawn.
+class GeometryShadowMaps
+{
+public:
+    /// Texels per side of each map.
+    static constexpr int size = 2048;
+
+    GeometryShadowMaps();
+    /// Culls the maps of `scene`'s children (its opaque geometry; volumes draw nothing there)
+    /// for `lights` (VolumeScene coordinates) over `receivers` (the boxes of the volumes that
+    /// read them, VolumeScene coordinates) into `cv`, so they are drawn before its camera.
+    void cull(osgUtil::CullVisitor& cv, osg::Group& scene, const std::vector<LightInfo>& lights,
+              const osg::BoundingBoxd& receivers);
+    /// The depth array texture (one layer per light, compared LEQUAL, border 1 = lit).
+    osg::Texture2DArray* texture() const { return _texture.get(); }
+    /// Per light of the last cull: VolumeScene coordinates -> its map's [0,1]^3 coordinates; a
+    /// zero matrix where no single map covers the receivers (a point light inside their box).
+    const std::vector<osg::Matrixd>& matrices() const { return _matrices; }
+
+private:
+    osg::ref_ptr<osg::Texture2DArray> _texture;
+    std::vector<osg::ref_ptr<osg::Camera>> _cameras;
+    std::vector<osg::Matrixd> _matrices;
+};
+
+}  // namespace volren
