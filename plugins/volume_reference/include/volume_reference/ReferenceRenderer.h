@@ -71,7 +71,8 @@ struct ReferenceImage
 /// transmittance exp(-∫ σ ds) from the sample towards the light, up to where that ray leaves the
 /// sample's own volume box or reaches a point light. σ is that volume's extinction as the view
 /// ray's (-ln(1 - α) / Δ0 of the trilinear value; infinite at α >= 1; NaN voxels and clipped
-/// points empty); other volumes cast no shadow on it. Other choices throw std::invalid_argument.
+/// points empty), and is 0 where ReferenceScene::occluders (opaque triangles) cross the way to
+/// the light; other volumes cast no shadow on it. Other choices throw std::invalid_argument.
 ReferenceImage renderReference(const ReferenceScene& scene, const ReferenceCamera& camera,
                                const ReferenceOptions& options = {});
 

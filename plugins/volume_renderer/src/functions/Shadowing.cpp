@@ -22,7 +22,7 @@ namespace {
 const std::vector<UniformDecl> geometryShadowUniforms = {{"volren_geometryShadowCount", "int", ""},
                                                          {"volren_geometryShadowMatrix", "mat4", "4"},
                                                          {"volren_geometryShadowBias", "float", "4"}};
-const TextureDecl geometryShadowTexture = {"volren_geometryShadow", "sampler2DArrayShadow"};
+const TextureDecl geometryShadowTexture = {"volren_geometryShadow", "sampler2DArray"};
 
 /// The maps' matrices from the volume's texture space and their depth bias (half a voxel along the
 /// volume's axis where the map's depth changes fastest, in map depth at the box's centre), or
@@ -56,7 +56,8 @@ void bindGeometryShadows(BindContext& c)
         t->setInternalFormat(GL_DEPTH_COMPONENT32F);
         t->setSourceFormat(GL_DEPTH_COMPONENT);
         t->setSourceType(GL_FLOAT);
-        t->setShadowComparison(true);
+        for (auto w : {osg::Texture::WRAP_S, osg::Texture::WRAP_T, osg::Texture::WRAP_R})
+            t->setWrap(w, osg::Texture::CLAMP_TO_EDGE);  // OSG's default CLAMP is not core GL
         t->setTextureSize(1, 1, 1);
         return t;
     }();

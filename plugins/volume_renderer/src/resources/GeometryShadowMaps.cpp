@@ -90,12 +90,11 @@ GeometryShadowMaps::GeometryShadowMaps() : _texture(new osg::Texture2DArray)
     _texture->setInternalFormat(GL_DEPTH_COMPONENT32F);
     _texture->setSourceFormat(GL_DEPTH_COMPONENT);
     _texture->setSourceType(GL_FLOAT);
-    _texture->setShadowComparison(true);
-    _texture->setShadowCompareFunc(osg::Texture::LEQUAL);
-    _texture->setFilter(osg::Texture::MIN_FILTER, osg::Texture::LINEAR);
-    _texture->setFilter(osg::Texture::MAG_FILTER, osg::Texture::LINEAR);
+    _texture->setFilter(osg::Texture::MIN_FILTER, osg::Texture::NEAREST);  // compared in the shader
+    _texture->setFilter(osg::Texture::MAG_FILTER, osg::Texture::NEAREST);
     _texture->setWrap(osg::Texture::WRAP_S, osg::Texture::CLAMP_TO_BORDER);
     _texture->setWrap(osg::Texture::WRAP_T, osg::Texture::CLAMP_TO_BORDER);
+    _texture->setWrap(osg::Texture::WRAP_R, osg::Texture::CLAMP_TO_EDGE);  // OSG's default CLAMP is not core GL
     _texture->setBorderColor(osg::Vec4d(1, 1, 1, 1));
     _texture->setTextureSize(size, size, 1);
 }

@@ -28,7 +28,7 @@ public:
     /// read them, VolumeScene coordinates) into `cv`, so they are drawn before its camera.
     void cull(osgUtil::CullVisitor& cv, osg::Group& scene, const std::vector<LightInfo>& lights,
               const osg::BoundingBoxd& receivers);
-    /// The depth array texture (one layer per light, compared LEQUAL, border 1 = lit).
+    /// The depth array texture (one layer per light, border 1 = lit; compared in the shader).
     osg::Texture2DArray* texture() const { return _texture.get(); }
     /// Per light of the last cull: VolumeScene coordinates -> its map's [0,1]^3 coordinates; a
     /// zero matrix where no single map covers the receivers (a point light inside their box).
