@@ -17,23 +17,6 @@ bool readsGeometryShadows(const Composition& composition)
     return false;
 }
 
-/// `candidate`'s lights in the VolumeScene's coordinates (the offer holds them in the node's).
-std::vector<LightInfo> sceneLights(const VolumeCandidate& candidate)
-{
-    std::vector<LightInfo> out = candidate.offer.lights;
-    for (LightInfo& light : out) {
-        const osg::Vec4d& p = light.position;
-        if (p.w() == 0.0) {
-            osg::Vec3d d = osg::Matrixd::transform3x3(osg::Vec3d(p.x(), p.y(), p.z()), candidate.matrix);
-            d.normalize();
-            light.position = osg::Vec4d(d, 0.0);
-        } else {
-            light.position = osg::Vec4d(osg::Vec3d(p.x(), p.y(), p.z()) * candidate.matrix, 1.0);
-        }
-    }
-    return out;
-}
-
 }  // namespace
 
 void cullGeometryShadows(osgUtil::CullVisitor& cv, osg::Group& scene, std::vector<VolumeCandidate>& candidates,
@@ -48,7 +31,7 @@ void cullGeometryShadows(osgUtil::CullVisitor& cv, osg::Group& scene, std::vecto
         receivers.expandBy(c.bound);
     }
     if (readers.empty()) return;
-    maps.cull(cv, scene, sceneLights(candidates[readers.front()]), receivers);
+    maps.cull(cv, scene, candidates[readers.front()].sceneLights, receivers);
     for (std::size_t i : readers) {
         VolumeCandidate& c = candidates[i];
         const osg::Matrixd textureToScene = textureToLocal(*c.node->getVolume()) * c.matrix;

@@ -124,6 +124,10 @@ std::vector<VolumeCandidate> analyseScene(osg::Group& scene, unsigned int mask, 
     std::vector<VolumeCandidate> out;
     for (auto& [node, matrix] : collector.volumes) {
         VolumeCandidate c{node, matrix, offerFor(*node, matrix, collector, modelView), {}, 0, false, {}};
+        for (const auto& [source, lightMatrix] : collector.lights)
+            c.sceneLights.push_back(lightInfo(*source, source->getReferenceFrame() == osg::LightSource::ABSOLUTE_RF
+                                                           ? osg::Matrixd::inverse(modelView)
+                                                           : osg::Matrixd(lightMatrix)));
         const osg::Matrixd texToScene = textureToLocal(*node->getVolume()) * matrix;
         for (int i = 0; i < 8; ++i) c.bound.expandBy(osg::Vec3d(i & 1, (i >> 1) & 1, (i >> 2) & 1) * texToScene);
         out.push_back(std::move(c));

@@ -21,6 +21,7 @@ struct VolumeCandidate
     int lod = 0;               ///< mip level it is sampled from (levelOfDetail)
     bool coarseByteFiltering = false;  ///< the driver filters 8-bit textures to 8-bit results
     std::optional<osg::Matrixd> textureToClip;  ///< volume texture space -> the culling camera's clip space
+    std::vector<LightInfo> sceneLights = {};  ///< the same lights in the VolumeScene's coordinates
     /// Volume texture space -> each light's opaque-geometry shadow map (BindContext::geometryShadowMatrices).
     std::vector<osg::Matrixd> geometryShadowMatrices = {};
     osg::ref_ptr<osg::Texture> geometryShadowMap = {};  ///< those maps, where its Shadowing reads them
