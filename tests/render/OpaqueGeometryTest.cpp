@@ -330,5 +330,24 @@ TEST_F(OpaqueGeometry, AModelUnderAScalingTransformIsLitAsAtUnitScale)
     EXPECT_LE(worst, 2e-3f);
 }
 
+TEST_F(OpaqueGeometry, GeometryAddedAfterAFrameMixesInAsIfItHadBeenThereFromTheStart)
+{
+    // A live scene (volren view) gets a model after it has drawn: its next frame equals the
+    // frame of a scene that had the model from the start.
+    for (const float z : {0.0f, -5.5f}) {
+        osg::ref_ptr<VolumeScene> live = sceneWith(nullptr);
+        osg::ref_ptr<osg::Group> bound = new osg::Group;  // the same framing as with the square
+        osg::ref_ptr<osg::Node> square = flatSquare({0, 0, z}, 4.0f, osg::Vec4(1, 1, 1, 1));
+        live->addChild(bound.get());
+        renderOrthoFromPlusZ(live.get(), 40, 40, 20.0);
+        live->addChild(square.get());
+        const Pixels after = renderOrthoFromPlusZ(live.get(), 40, 40, 20.0);
+        const Pixels fromStart = renderOrthoFromPlusZ(sceneWith(square.get()).get(), 40, 40, 20.0);
+        for (std::size_t i = 0; i < after.rgba.size(); ++i)
+            for (int c = 0; c < 4; ++c) ASSERT_NEAR(after.rgba[i][c], fromStart.rgba[i][c], 1e-6) << "z " << z << " pixel " << i;
+        EXPECT_NEAR(after.at(20, 20).g(), transmittance(n / 2.0 - z), 2e-4);
+    }
+}
+
 }  // namespace
 }  // namespace volren::test

@@ -20,8 +20,16 @@ void MatrixUniforms::drawImplementation(osg::RenderInfo& renderInfo, const osg::
             }
         }
     }
+    const bool clientArrays = !state.useVertexArrayObject(drawable->getUseVertexArrayObject());
+    if (clientArrays) forgetBoundVertexBuffer(state);
     drawable->drawImplementation(renderInfo);
-    if (!state.useVertexArrayObject(drawable->getUseVertexArrayObject())) forgetClientArrays(state);
+    if (clientArrays) forgetClientArrays(state);
+}
+
+void forgetBoundVertexBuffer(osg::State& state)
+{
+    state.get<osg::GLExtensions>()->glBindBuffer(GL_ARRAY_BUFFER_ARB, 0);
+    state.setCurrentVertexBufferObject(nullptr);
 }
 
 void forgetClientArrays(osg::State& state)
