@@ -43,6 +43,9 @@ public:
     std::vector<std::string> shaderDirectories() const;
     /// Full path of shader file `relative`; throws std::runtime_error when not found.
     std::string locate(const std::string& relative) const;
+    /// Text of shader file `relative` (located as locate() does); throws std::runtime_error
+    /// naming the file when it is missing or unreadable.
+    std::string read(const std::string& relative) const;
 
 private:
     std::map<std::string, std::map<std::string, ShaderFunction>> _functions;

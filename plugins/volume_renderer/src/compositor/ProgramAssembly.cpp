@@ -2,7 +2,6 @@
 
 #include <volume_renderer/Slots.h>
 
-#include <fstream>
 #include <map>
 #include <regex>
 #include <stdexcept>
@@ -10,15 +9,6 @@
 namespace volren {
 
 namespace {
-
-std::string readText(const std::string& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw std::runtime_error("cannot read shader file " + path);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
 
 std::string replaceAll(std::string text, const std::string& from, const std::string& to)
 {
@@ -160,7 +150,7 @@ void ProgramAssembly::append(const std::string& name, const std::string& text)
 
 std::string ProgramAssembly::file(const std::string& relative) const
 {
-    return readText(_registry.locate(relative));
+    return _registry.read(relative);
 }
 
 std::string ProgramAssembly::source(const ShaderFunction* f) const

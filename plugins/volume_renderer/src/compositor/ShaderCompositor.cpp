@@ -7,7 +7,6 @@
 #include <osg/Shader>
 
 #include <cstdio>
-#include <fstream>
 #include <functional>
 #include <regex>
 #include <stdexcept>
@@ -28,13 +27,6 @@ void checkComposition(const Composition& composition)
         if (!s || !s->isTemplate) throw std::runtime_error("'" + entry.first + "' is not a template slot");
     }
     if (composition.lightCount > 64) throw std::runtime_error("at most 64 lights per volume");
-}
-
-std::string readVertexSource(const ShaderFunctionRegistry& registry, const std::string& relative)
-{
-    std::ifstream in(registry.locate(relative), std::ios::binary);
-    if (!in) throw std::runtime_error("cannot read shader file " + relative);
-    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
 }  // namespace
@@ -110,7 +102,7 @@ std::shared_ptr<const ComposedProgram> ShaderCompositor::build(const Composition
     osg::ref_ptr<osg::Program> program = new osg::Program;
     program->setName(label);
     osg::ref_ptr<osg::Shader> vertex =
-        new osg::Shader(osg::Shader::VERTEX, readVertexSource(_registry, raySetup->vertexFile));
+        new osg::Shader(osg::Shader::VERTEX, _registry.read(raySetup->vertexFile));
     vertex->setName(raySetup->vertexFile);
     osg::ref_ptr<osg::Shader> fragment = new osg::Shader(osg::Shader::FRAGMENT, result->fragmentSource);
     fragment->setName(std::string(label) + " fragment");

@@ -9,6 +9,7 @@
 #include <osg/Notify>
 
 #include <cstdlib>
+#include <fstream>
 #include <dlfcn.h>
 #include <sstream>
 #include <stdexcept>
@@ -158,6 +159,16 @@ std::string ShaderFunctionRegistry::locate(const std::string& relative) const
     }
     throw std::runtime_error("shader file '" + relative + "' not found (searched: " + searched +
                              "; set VOLREN_SHADER_PATH or VOLREN_SHARE_DIR)");
+}
+
+std::string ShaderFunctionRegistry::read(const std::string& relative) const
+{
+    const std::string path = locate(relative);
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw std::runtime_error("cannot read shader file " + path);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
 }
 
 }  // namespace volren

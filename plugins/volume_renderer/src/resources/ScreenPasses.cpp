@@ -8,9 +8,7 @@
 #include <osg/GLExtensions>
 #include <osg/Geode>
 
-#include <fstream>
 #include <map>
-#include <sstream>
 #include <stdexcept>
 
 #ifndef GL_SHADER_IMAGE_ACCESS_BARRIER_BIT
@@ -156,16 +154,6 @@ void fit(osg::Texture2D& t, int w, int h)
     t.dirtyTextureObject();
 }
 
-std::string readShader(const std::string& relative)
-{
-    const std::string path = ShaderFunctionRegistry::instance().locate(relative);
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw std::runtime_error("cannot read shader file " + path);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
 }  // namespace
 
 struct ScreenPasses::Capture
@@ -237,8 +225,8 @@ osg::StateSet* ScreenPasses::entryState(osgUtil::CullVisitor& cv, const void* ke
     if (!_entryProgram) {
         _entryProgram = new osg::Program;
         _entryProgram->setName("volren entry points");
-        _entryProgram->addShader(new osg::Shader(osg::Shader::VERTEX, readShader("RaySetup/box.vert")));
-        _entryProgram->addShader(new osg::Shader(osg::Shader::FRAGMENT, readShader("RaySetup/rasterised_entry.frag")));
+        _entryProgram->addShader(new osg::Shader(osg::Shader::VERTEX, ShaderFunctionRegistry::instance().read("RaySetup/box.vert")));
+        _entryProgram->addShader(new osg::Shader(osg::Shader::FRAGMENT, ShaderFunctionRegistry::instance().read("RaySetup/rasterised_entry.frag")));
     }
     Entry& e = _entries[{_camera, key}];
     if (!e.geometry || e.geometry->getVertexArray() != box.getVertexArray() || e.boxSize != boxSize ||
