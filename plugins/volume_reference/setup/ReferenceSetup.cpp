@@ -57,6 +57,7 @@ ReferenceScene referenceScene(VolumeScene& scene)
             if (const ShaderFunction* f = ShaderFunctionRegistry::instance().find("Shadowing", it->second)) {
                 placed.shadows = f->traits.shadows ? ReferenceScene::Shadows::Exact : ReferenceScene::Shadows::None;
                 placed.occlusion = f->traits.occlusion;
+                placed.shadowsGeometry = f->traits.shadowsGeometry;
             }
     }
     return content;

@@ -37,7 +37,8 @@ Medium mediumOf(const ReferenceScene& scene, const ReferenceScene::Placed& place
     m.shadowTolerance = options.tolerance / 4.0;
     m.shadowFirstStep = options.firstStep;
     m.shadowFinestStep = options.finestStep;
-    if (m.shadows != ReferenceScene::Shadows::None && lightCount > 0 && m.shading != Shading::None) {
+    m.shadowsGeometry = placed.shadowsGeometry && lightCount > 0 && m.shading != Shading::None;
+    if ((m.shadows != ReferenceScene::Shadows::None || m.shadowsGeometry) && lightCount > 0 && m.shading != Shading::None) {
         for (const Clip& c : clips) m.clips.push_back({c.node, m.localToWorld * c.toShape});
         m.findEmptyBlocks();
         if (scene.occluders) m.occluders = &scene;
@@ -108,6 +109,15 @@ glm::dvec4 Integrator::integrate(const Ray& ray, double end, bool& converged, bo
         }
         coarse = fine;
     }
+}
+
+double Integrator::lightOnGeometry(const glm::dvec3& world, ShadowTally& tally) const
+{
+    double light = 1.0;
+    for (const Medium& m : _media)
+        if (m.shadowsGeometry)
+            light *= m.lightOnGeometry(toGlm(osg::Vec3d(world.x, world.y, world.z) * m.worldToLocal), tally);
+    return light;
 }
 
 bool Integrator::boxSpan(const Medium& m, const Ray& ray, double& a, double& b)

@@ -25,6 +25,10 @@ public:
     /// `shadowsConverged` says whether every shadow ray of the integration kept converged.
     glm::dvec4 integrate(const Ray& ray, double end, bool& converged, bool& shadowsConverged, double& finest) const;
 
+    /// What reaches the opaque geometry at `world` of its lights: the product over the media
+    /// that shadow it (Medium::shadowsGeometry) of their lightOnGeometry(); 1 for none.
+    double lightOnGeometry(const glm::dvec3& world, ShadowTally& tally) const;
+
 private:
     /// Where the ray is inside the box of `m`, as fractions [a, b] of the ray; false if nowhere.
     static bool boxSpan(const Medium& m, const Ray& ray, double& a, double& b);

@@ -76,6 +76,8 @@ struct Medium
     /// quadrature's directions quadrupled until two estimates differ by at most 4 shadowTolerance.
     bool occlusion = false;
     double occlusionStart = 0.0, occlusionDistance = 0.0;
+    /// It shadows the opaque geometry (ReferenceScene::Placed::shadowsGeometry; lit media only).
+    bool shadowsGeometry = false;
     osg::Matrixd localToWorld;
     std::vector<Clip> clips;  ///< the clip shapes that apply, from local coordinates
     /// With exact shadows: the scene whose opaque triangles (ReferenceScene::occluders) block a
@@ -105,6 +107,9 @@ struct Medium
     /// min(`distance`, the way out of the box): exp(-the integral of the extinction, in world
     /// lengths as the view ray's), converged; 0 past an opaque (α >= 1) point, 1 for no path.
     double transmittance(const glm::dvec3& local, const glm::dvec3& l, double distance, ShadowTally& tally) const;
+    /// The mean over the lights of the transmittance from local point `local` (inside or
+    /// outside the box) to each light through this medium.
+    double lightOnGeometry(const glm::dvec3& local, ShadowTally& tally) const;
     /// Whether opaque geometry blocks the way from local point `local` to the light at local
     /// `position` (w = 0: the direction towards it).
     bool blocked(const glm::dvec3& local, const glm::dvec4& position) const;

@@ -14,6 +14,7 @@ namespace volren {
 
 using reference::Integrator;
 using reference::Ray;
+using reference::ShadowTally;
 using reference::toGlm;
 
 ReferenceImage renderReference(const ReferenceScene& scene, const ReferenceCamera& camera, const ReferenceOptions& options)
@@ -52,14 +53,21 @@ ReferenceImage renderReference(const ReferenceScene& scene, const ReferenceCamer
                 // Opaque geometry ends the ray at its depth and lies behind the volumes.
                 double end = 1.0;
                 glm::dvec4 behind(toGlm(options.background), 0.0);
+                bool converged = true, shadowsConverged = true;
+                double geometryLight = 1.0;  // what the volumes that shadow it let through
                 if (withGeometry && options.geometryDepth[pixel] < 1.0f) {
                     const osg::Vec3d hit = osg::Vec3d(nx, ny, 2.0 * options.geometryDepth[pixel] - 1.0) * clipToWorld;
                     end = glm::length(toGlm(hit - nearPoint)) / ray.length;
+                    ShadowTally tally;
+                    geometryLight = integrator.lightOnGeometry(toGlm(hit), tally);
+                    shadowsConverged = tally.converged;
+                    localFinest = std::min(localFinest, tally.finest);
                 }
                 if (withGeometry)
-                    for (int k = 0; k < 4; ++k) behind[k] = options.geometryColour[pixel * 4 + k];
-                bool converged = true, shadowsConverged = true;
-                const glm::dvec4 c = integrator.integrate(ray, end, converged, shadowsConverged, localFinest);
+                    for (int k = 0; k < 4; ++k) behind[k] = options.geometryColour[pixel * 4 + k] * (k < 3 ? geometryLight : 1.0);
+                bool shadowsOfRay = true;
+                const glm::dvec4 c = integrator.integrate(ray, end, converged, shadowsOfRay, localFinest);
+                shadowsConverged = shadowsConverged && shadowsOfRay;
                 if (!converged || !shadowsConverged) ++unconverged;
                 if (!shadowsConverged) ++unconvergedShadows;
                 double* out = &image.rgba[pixel * 4];

@@ -153,6 +153,34 @@ double Medium::transmittance(const glm::dvec3& local, const glm::dvec3& l, doubl
     }
 }
 
+double Medium::lightOnGeometry(const glm::dvec3& local, ShadowTally& tally) const
+{
+    if (lights.empty()) return 1.0;
+    double sum = 0.0;
+    for (const auto& [position, colour] : lights) {
+        glm::dvec3 l = position.w == 0.0 ? glm::dvec3(position) : glm::dvec3(position) - local;
+        const double distance = position.w == 0.0 ? std::numeric_limits<double>::infinity() : glm::length(l);
+        if (!(glm::length(l) > 0.0)) {
+            sum += 1.0;
+            continue;
+        }
+        l = glm::normalize(l);
+        // The way from `local` towards the light inside the box: [enter, leave].
+        double enter = 0.0, leave = distance;
+        for (int a = 0; a < 3; ++a) {
+            if (l[a] == 0.0) {
+                if (std::abs(local[a]) > 0.5 * size[a]) leave = -1.0;
+                continue;
+            }
+            const double u = (-0.5 * size[a] - local[a]) / l[a], v = (0.5 * size[a] - local[a]) / l[a];
+            enter = std::max(enter, std::min(u, v));
+            leave = std::min(leave, std::max(u, v));
+        }
+        sum += leave > enter ? transmittance(local + l * enter, l, leave - enter, tally) : 1.0;
+    }
+    return sum / double(lights.size());
+}
+
 bool Medium::blocked(const glm::dvec3& local, const glm::dvec4& position) const
 {
     if (!occluders || !occluders->occluders) return false;

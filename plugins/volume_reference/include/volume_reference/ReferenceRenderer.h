@@ -73,6 +73,9 @@ struct ReferenceImage
 /// ray's (-ln(1 - α) / Δ0 of the trilinear value; infinite at α >= 1; NaN voxels and clipped
 /// points empty), and is 0 where ReferenceScene::occluders (opaque triangles) cross the way to
 /// the light; other volumes cast no shadow on it. Other choices throw std::invalid_argument.
+/// The opaque geometry's colour (ReferenceOptions::geometryColour) is scaled, where volumes
+/// shadow it (ReferenceScene::Placed::shadowsGeometry), by the product over those volumes of the
+/// mean over the lights of the same transmittance from its surface point (the pixel's depth).
 ReferenceImage renderReference(const ReferenceScene& scene, const ReferenceCamera& camera,
                                const ReferenceOptions& options = {});
 

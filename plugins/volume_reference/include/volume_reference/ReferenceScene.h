@@ -38,6 +38,11 @@ struct ReferenceScene
         /// integral of the transmittance over the settings' coneStart..aoDistance). referenceSetup()
         /// sets it from the traits of the renderer's Shadowing choice.
         bool occlusion = false;
+        /// Volumes: they shadow the opaque geometry: each geometry pixel's colour is scaled by
+        /// the mean over the lights of the transmittance from its surface point to each light
+        /// through this volume (several such volumes: the product of theirs). referenceSetup()
+        /// sets it from the traits of the renderer's Shadowing choice (shadowsGeometry).
+        bool shadowsGeometry = false;
     };
     std::vector<Placed> volumes;  ///< VolumeNodes with a volume and a transfer function
     std::vector<Placed> clips;    ///< ClipNodes

@@ -89,6 +89,10 @@ struct ImplementationTraits
     /// and the ambient term scaled by the hemisphere's transmittance over its reach (`occlusion`).
     bool shadows = false;
     bool occlusion = false;  ///< see `shadows`
+    /// Shadowing: the volume also shadows the opaque geometry: the pass scales the polygons'
+    /// colour by the transmittance to the lights that its light volume (AuxData::LightVolume,
+    /// one channel per light) holds where the way to each light leaves the box.
+    bool shadowsGeometry = false;
     /// Other names users may give it in settings ("dvr" for dvr_front_to_back).
     std::vector<std::string> aliases = {};
 };

@@ -118,6 +118,7 @@ void registerShadowingFunctions(ShaderFunctionRegistry& registry)
                   .traits = {.calls = SlotList{"Reconstruction", "Classification", "ClipPosition"},
                              .clipsPerSample = true,
                              .shadows = true,
+                             .shadowsGeometry = true,
                              .aliases = {"lightvolume", "light-volume", "propagated"}}});
 
     // Cone tracing through the opacity mip chain: soft shadows (cone), and with directional

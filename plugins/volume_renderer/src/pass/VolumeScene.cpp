@@ -5,12 +5,14 @@
 #include "SceneAnalysis.h"
 #include "TextureBudget.h"
 
+#include "../resources/ShadowedGeometry.h"
 #include "../resources/TextureCache.h"
 #include "../resources/VolumeProxy.h"
 
 #include <volume_renderer/GraphicsDriver.h>
 #include <volume_renderer/SampleDistance.h>
 #include <volume_renderer/ScreenPasses.h>
+#include <volume_renderer/ShaderFunctionRegistry.h>
 #include <volume_renderer/VolumeScene.h>
 
 #include <osg/Notify>
@@ -26,6 +28,7 @@ struct VolumeScene::Pass
     ScreenPasses screen;
     TextureCache textures;
     GeometryShadowMaps geometryShadows;  ///< the opaque geometry's depth from each light
+    ShadowedGeometry shadowedGeometry;   ///< the volumes' light volumes darkening that geometry
     std::map<const VolumeNode*, VolumeProxy> proxies;
     std::map<std::vector<const VolumeNode*>, VolumeProxy> sets;  ///< multi-volume sets, by member
     std::set<std::vector<const VolumeNode*>> warnedOverlaps;
@@ -38,6 +41,10 @@ struct VolumeScene::Pass
               std::set<std::string>& keys);
     /// Composes and binds the proxy of one volume.
     VolumeProxy& update(const VolumeCandidate& c, const ChosenComposition& chosen, ShaderCompositor& compositor);
+    /// Schedules the darkening of the opaque geometry by `c`'s light volume where its Shadowing
+    /// (in `composition`) shadows the geometry and `proxy` was drawn.
+    void shadowGeometry(osgUtil::CullVisitor& cv, const VolumeCandidate& c, const Composition& composition,
+                        const VolumeProxy& proxy);
     /// Forgets proxies and textures no cull traversal used lately.
     void endCull();
 };
@@ -86,6 +93,22 @@ VolumeProxy& VolumeScene::Pass::update(const VolumeCandidate& c, const ChosenCom
     return proxy;
 }
 
+void VolumeScene::Pass::shadowGeometry(osgUtil::CullVisitor& cv, const VolumeCandidate& c,
+                                       const Composition& composition, const VolumeProxy& proxy)
+{
+    // A hidden volume (its TF shows nothing) casts no shadow, and its light volume was not rebuilt.
+    if (proxy.hidden || !c.offer.opaqueGeometry || composition.lightCount == 0 || c.offer.lights.empty()) return;
+    const ShaderFunction* f = ShaderFunctionRegistry::instance().find("Shadowing", composition.functionFor("Shadowing"));
+    if (!f || !f->traits.shadowsGeometry) return;
+    osg::Texture3D* lightVolume = textures.builtVolumes().find(c.node, AuxData::LightVolume);
+    if (!lightVolume) return;
+    const std::vector<LightInfo> lights(c.offer.lights.begin(),
+                                        c.offer.lights.begin() + std::min<std::ptrdiff_t>(composition.lightCount,
+                                                                                          std::ptrdiff_t(c.offer.lights.size())));
+    shadowedGeometry.cull(cv, c.node, c.node->getVolume()->worldSize(), lightVolume, lights, c.matrix,
+                          screen.depthState(cv, 0), cull);
+}
+
 void VolumeScene::Pass::endCull()
 {
     auto stale = [this](unsigned int last) { return cull - last > 2; };
@@ -93,6 +116,7 @@ void VolumeScene::Pass::endCull()
     for (auto it = sets.begin(); it != sets.end();) it = stale(it->second.lastCull) ? sets.erase(it) : std::next(it);
     textures.endCull(cull);
     screen.endCull(cull);
+    shadowedGeometry.endCull(cull);
 }
 
 VolumeScene::VolumeScene() : _state(std::make_unique<Pass>()) {}
@@ -175,7 +199,9 @@ void VolumeScene::traverse(osg::NodeVisitor& nv)
         }
         for (std::size_t i : group.members) {
             try {
-                p.draw(*cv, p.update(candidates[i], chosen[i], _compositor), candidates[i].matrix, candidates[i].node, keys);
+                VolumeProxy& proxy = p.update(candidates[i], chosen[i], _compositor);
+                p.draw(*cv, proxy, candidates[i].matrix, candidates[i].node, keys);
+                p.shadowGeometry(*cv, candidates[i], chosen[i].composition, proxy);
             } catch (const std::exception& e) {
                 OSG_WARN << "volren: cannot draw volume '" << candidates[i].node->getName() << "': " << e.what()
                          << std::endl;

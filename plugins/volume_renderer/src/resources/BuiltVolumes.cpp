@@ -194,6 +194,12 @@ osg::Texture3D* BuiltVolumes::texture(const VolumeNode* node, AuxData kind, cons
     return t;
 }
 
+osg::Texture3D* BuiltVolumes::find(const VolumeNode* node, AuxData kind) const
+{
+    auto it = _entries.find({node, kind});
+    return it == _entries.end() ? nullptr : it->second->texture.get();
+}
+
 osg::Node* BuiltVolumes::build(const VolumeNode* node, AuxData kind, const std::string& key, osg::Program* program,
                                std::vector<BuildDispatch> plan)
 {

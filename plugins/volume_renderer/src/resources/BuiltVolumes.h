@@ -37,6 +37,8 @@ public:
     /// full mip chain when `mipmapped`; remade when any of these change; used in cull `cull`.
     osg::Texture3D* texture(const VolumeNode* node, AuxData kind, const osg::Vec3i& dims, int channels, bool mipmapped,
                             unsigned int cull);
+    /// The `kind` volume of `node` if texture() made one, else null.
+    osg::Texture3D* find(const VolumeNode* node, AuxData kind) const;
     /// The node that rebuilds `node`'s `kind` volume by running `plan` with `program` (culled
     /// under the ray caster's state so it reads the same uniforms and textures; the volume is
     /// image unit 1, its levels allocated when mip-mapped); null when the volume holds what

@@ -11,7 +11,7 @@ namespace volren {
 
 namespace {
 
-constexpr int maxLights = 4;
+constexpr int maxLights = lightVolumeMaxLights;
 constexpr int groupSize = 8;  // local_size_x and _y of the build shader
 
 }  // namespace

@@ -7,6 +7,9 @@
 
 namespace volren {
 
+/// Lights a light volume holds (one channel each); further lights get none.
+constexpr int lightVolumeMaxLights = 4;
+
 /// The texels per axis of the light volume of a volume of `dims` voxels at `scale` (0, 1]:
 /// each axis scaled and rounded, at least 2.
 osg::Vec3i lightVolumeDims(const osg::Vec3i& dims, double scale);
