@@ -88,6 +88,7 @@ std::string lightingModel(const ReferenceScene& scene, bool lighting)
         // What its Shadowing approximates (referenceScene fills it from the implementation's traits).
         if (lit && placed.shadows == ReferenceScene::Shadows::Exact) model += "+shadows";
         if (lit && placed.occlusion) model += "+occlusion";
+        if (lit && placed.shadowsGeometry && scene.occluders) model += "+shadowed geometry";
         key += (key.empty() ? "" : "+") + model;
     }
     return key;
