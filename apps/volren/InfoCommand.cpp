@@ -35,7 +35,9 @@ int infoCommand(const std::vector<std::string>& args)
               << "voxel type:  " << voxelTypeName(v->type()) << "\n"
               << "blocks:      " << v->channels() << (v->channels() == 1 ? " channel" : " channels") << " x "
               << v->frames() << (v->frames() == 1 ? " time point" : " time points")
-              << " (statistics over all; rendering shows channel 0, time point 0)\n"
+              << (v->channels() > 1 && !v->fullResolution()
+                      ? " (statistics over all; rendering shows every channel in its colour, time point 0 or --time)\n"
+                      : " (statistics over all; rendering shows channel 0, time point 0 or --time)\n")
               << "spacing:     " << s.x() << " x " << s.y() << " x " << s.z() << "\n"
               << "world size:  " << v->worldSize().x() << " x " << v->worldSize().y() << " x " << v->worldSize().z() << "\n"
               << "rescale:     value = stored * " << v->rescaleSlope() << " + " << v->rescaleIntercept() << "\n"

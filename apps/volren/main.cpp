@@ -28,6 +28,7 @@ const std::vector<std::pair<std::string, std::string>>& commandUsages()
          "                --turntable N: N frames around the scene, OUT_0001.png ... (OUT.gif: one animated GIF)\n"
          "                --time K: time point K (from 0) of time-series volumes; all: a frame per time point\n"
          "                (with --turntable N, the time points spread over its N frames)\n"
+         "                multi-channel volumes show every channel in one ray (--set channels=0,2: those)\n"
          "                -O: reader options: -O lazy (keep the file's finer levels on disk, read by brick),\n"
          "                -O ramBudgetMB=N (files over N MiB open lazily; default: 1/4 of RAM)\n"
          "  volren render --help-settings   every --set KEY with its default, every implementation\n"},

@@ -1,4 +1,6 @@
-// volren::VolumeNode: its (shareable) Volume and TransferFunction and its RenderSettings.
+// volren::VolumeNode: its (shareable) Volume and TransferFunction, its RenderSettings and, for
+// a multi-channel volume, how each channel is shown (Channels: visible and transfer function),
+// and the time point a time series shows (TimePoint, written when not 0).
 // Name, node mask, state set and callbacks come from the osg::Node wrapper.
 //
 // Settings are written as `key "value"` pairs under the names of `volren render --set` and read
@@ -107,6 +109,63 @@ bool readTransferFunction(osgDB::InputStream& is, VolumeNode& node)
     return true;
 }
 
+// --- Channels: how each channel of a multi-channel volume is shown ------------------------
+
+bool checkChannels(const VolumeNode& node) { return !node.channels.empty(); }
+
+bool writeChannels(osgDB::OutputStream& os, const VolumeNode& node)
+{
+    writeInt(os, std::int64_t(node.channels.size()));
+    os << os.BEGIN_BRACKET << std::endl;
+    for (const volren::ChannelDisplay& channel : node.channels) {
+        writeProperty(os, "Visible");
+        writeBool(os, channel.visible);
+        writeProperty(os, "TransferFunction");  // the node's where the channel names none
+        writeObjectField(os, channel.transferFunction ? channel.transferFunction.get() : node.getTransferFunction());
+    }
+    os << os.END_BRACKET << std::endl;
+    return true;
+}
+
+bool readChannels(osgDB::InputStream& is, VolumeNode& node)
+{
+    const std::string field = "volren::VolumeNode Channels";
+    std::int64_t count = 0;
+    if (!readInt(is, count, 0, 4096, field)) return false;
+    is >> is.BEGIN_BRACKET;
+    std::vector<volren::ChannelDisplay> channels(static_cast<std::size_t>(count));
+    for (std::size_t c = 0; c < channels.size(); ++c) {
+        const std::string what = field + " " + std::to_string(c);
+        if (!readProperty(is, "Visible", what) || !readBool(is, channels[c].visible, what + " Visible") ||
+            !readProperty(is, "TransferFunction", what) ||
+            !readObjectField(is, channels[c].transferFunction, what + " TransferFunction", "volren::TransferFunction"))
+            return false;
+    }
+    is >> is.END_BRACKET;
+    if (is.getException()) return false;
+    node.channels = std::move(channels);
+    return true;
+}
+
+// --- TimePoint: the time point a time-series volume shows ---------------------------------
+
+bool checkTimePoint(const VolumeNode& node) { return node.timePoint() != 0; }
+
+bool writeTimePoint(osgDB::OutputStream& os, const VolumeNode& node)
+{
+    writeInt(os, node.timePoint());
+    os << std::endl;
+    return true;
+}
+
+bool readTimePoint(osgDB::InputStream& is, VolumeNode& node)
+{
+    std::int64_t t = 0;
+    if (!readInt(is, t, 0, 1000000000, "volren::VolumeNode TimePoint")) return false;
+    node.setTimePoint(int(t));
+    return true;
+}
+
 // --- Settings ------------------------------------------------------------------------------
 
 bool checkSettings(const VolumeNode&) { return true; }
@@ -156,4 +215,6 @@ REGISTER_OBJECT_WRAPPER(volren_VolumeNode, new volren::VolumeNode, volren::Volum
     ADD_USER_SERIALIZER(Volume);
     ADD_USER_SERIALIZER(TransferFunction);
     ADD_USER_SERIALIZER(Settings);
+    ADD_USER_SERIALIZER(Channels);
+    ADD_USER_SERIALIZER(TimePoint);
 }

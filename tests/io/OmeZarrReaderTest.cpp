@@ -4,6 +4,7 @@
 // and the reason.
 #include "TestData.h"
 
+#include <volume_model/ChannelDisplay.h>
 #include <volume_model/LoadProgress.h>
 #include <volume_model/OmeZarrImage.h>
 #include <volume_model/ReadVolume.h>
@@ -298,6 +299,25 @@ TEST(OmeZarrReader, TczyxBecomesChannelAndTimeBlocksWithOmeroChannels)
     EXPECT_TRUE(channels[0].hasWindow);
     EXPECT_EQ(channels[0].windowMax, 4095.0);
     EXPECT_EQ(channels[0].windowStart, 10.0);
+    // The volume carries them as display hints (windows in data values), and its default shows them.
+    ASSERT_EQ(v->channelHints.size(), 2u);
+    EXPECT_EQ(v->channelHints[0].name, "DAPI");
+    EXPECT_EQ(v->channelHints[0].colours, std::vector<osg::Vec3f>{osg::Vec3f(0, 0, 1)});
+    EXPECT_TRUE(v->channelHints[0].hasWindow);
+    EXPECT_EQ(v->channelHints[0].low, 10.0);
+    EXPECT_EQ(v->channelHints[0].high, 900.0);
+    EXPECT_TRUE(v->channelHints[0].visible);
+    EXPECT_EQ(v->channelHints[1].colours, std::vector<osg::Vec3f>{osg::Vec3f(0, 1, 0)});
+    EXPECT_EQ(v->channelHints[1].low, 100.0);
+    EXPECT_EQ(v->channelHints[1].high, 2000.0);
+    EXPECT_FALSE(v->channelHints[1].visible);
+    const std::vector<ChannelDisplay> shown = defaultChannelDisplays(*v);
+    ASSERT_EQ(shown.size(), 2u);
+    EXPECT_TRUE(shown[0].visible);
+    EXPECT_FALSE(shown[1].visible) << "inactive in the file";
+    EXPECT_EQ(shown[0].transferFunction->evaluate(900.0), osg::Vec4(0, 0, 1, float(defaultChannelOpacity)));
+    EXPECT_EQ(shown[0].transferFunction->evaluate(10.0).a(), 0.0f);
+    EXPECT_EQ(shown[1].transferFunction->evaluate(2000.0), osg::Vec4(0, 1, 0, float(defaultChannelOpacity)));
     EXPECT_EQ(channels[0].windowEnd, 900.0);
     EXPECT_EQ(channels[1].label, "GFP");
     EXPECT_EQ(channels[1].green, 1.f);

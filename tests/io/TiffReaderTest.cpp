@@ -3,6 +3,7 @@
 // ImageJ / OME-XML layouts, numbered slice folders, bad files, progress and cancellation.
 #include "TestData.h"
 
+#include <volume_model/ChannelDisplay.h>
 #include <volume_model/LoadProgress.h>
 #include <volume_model/ReadVolume.h>
 
@@ -16,6 +17,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <iterator>
 
 namespace volren::test {
 namespace {
@@ -227,6 +229,62 @@ TEST(TiffReader, ReadsTwoChannelDnaHyperstackAsInTheManifest)
     EXPECT_EQ(blockSum(*v, 1, 0), 750937956.0);     // odd pages
 }
 
+TEST(TiffReader, TheDnaHyperstacksLutsAndDisplayRangesBecomeChannelHints)
+{
+    // Its IJMetadata (tags 50838/50839): channel 0 the Magenta LUT over 0..65535 (ImageJ's range
+    // when none was set), channel 1 the Green LUT over 624..6281.91015625.
+    VOLREN_REQUIRE_SHARED_DATA();
+    osg::ref_ptr<Volume> v = readVolumeFile(sharedData("microscopy/xyzc_16bit__dna_conf_wf.tif"));
+    ASSERT_EQ(v->channelHints.size(), 2u);
+    const ChannelHint &confocal = v->channelHints[0], &widefield = v->channelHints[1];
+    ASSERT_EQ(confocal.colours.size(), 256u);
+    EXPECT_EQ(confocal.colours[0], osg::Vec3f(0, 0, 0));
+    EXPECT_EQ(confocal.colours[128], osg::Vec3f(128 / 255.f, 0, 128 / 255.f));
+    EXPECT_EQ(confocal.colours[255], osg::Vec3f(1, 0, 1));
+    EXPECT_TRUE(confocal.hasWindow);
+    EXPECT_EQ(confocal.low, 0.0);
+    EXPECT_EQ(confocal.high, 65535.0);
+    ASSERT_EQ(widefield.colours.size(), 256u);
+    EXPECT_EQ(widefield.colours[255], osg::Vec3f(0, 1, 0));
+    EXPECT_EQ(widefield.low, 624.0);
+    EXPECT_EQ(widefield.high, 6281.91015625);
+    // The default display: the file's LUTs; channel 1 over its range, channel 0 (no range set)
+    // from its background to its 99.5th percentile.
+    const std::vector<ChannelDisplay> shown = defaultChannelDisplays(*v);
+    ASSERT_EQ(shown.size(), 2u);
+    const TransferFunction &tf0 = *shown[0].transferFunction, &tf1 = *shown[1].transferFunction;
+    EXPECT_EQ(tf1.points().begin()->first, 624.0);
+    EXPECT_EQ(tf1.points().rbegin()->first, 6281.91015625);
+    EXPECT_EQ(tf1.evaluate(7000.0), osg::Vec4(0, 1, 0, float(defaultChannelOpacity)));
+    EXPECT_GT(tf0.points().begin()->first, 0.0);
+    EXPECT_LT(tf0.points().rbegin()->first, 65535.0);
+    const osg::Vec4 top = tf0.evaluate(65535.0);
+    EXPECT_EQ(osg::Vec3(top.r(), top.g(), top.b()), osg::Vec3(1, 0, 1)) << "magenta, the file's LUT";
+}
+
+TEST(TiffReader, BrokenImageJDisplayMetadataIsIgnoredWithAWarning)
+{
+    // Display hints only decide colours: a bad IJMetadata block leaves the voxels as they are.
+    VOLREN_REQUIRE_SHARED_DATA();
+    std::ifstream in(sharedData("microscopy/xyzc_16bit__dna_conf_wf.tif"), std::ios::binary);
+    const std::string original((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::size_t header = original.find("IJIJinfo");
+    ASSERT_NE(header, std::string::npos);
+    const std::size_t luts = original.find(std::string("luts\0\0\0\2", 8), header);
+    ASSERT_NE(luts, std::string::npos);
+    const std::string dir = tempDirectory();
+    for (const auto& [at, bytes] : {std::pair(header, std::string("XXXX")), std::pair(luts + 4, std::string("\x7f\xff\xff\xff"))}) {
+        std::string broken = original;
+        broken.replace(at, bytes.size(), bytes);
+        const std::string path = dir + "/broken.tif";
+        writeFile(path, broken);
+        osg::ref_ptr<Volume> v = readVolumeFile(path);
+        EXPECT_TRUE(v->channelHints.empty());
+        EXPECT_EQ(v->channels(), 2);
+        EXPECT_EQ(blockSum(*v, 1, 0), 750937956.0);
+    }
+}
+
 TEST(TiffReader, VolrenPluginShadowsOsgsOwnTiffPluginForObjectsImagesAndNodes)
 {
     VOLREN_REQUIRE_SHARED_DATA();
@@ -357,6 +415,29 @@ TEST(TiffReader, OmeTiffGivesLayoutFromDimensionOrderAndPhysicalSizes)
     for (int c = 0; c < 2; ++c)
         for (int t = 0; t < 2; ++t)
             for (int z = 0; z < 3; ++z) EXPECT_EQ(at(*v, c, t, 1, 2, z), double(z + 3 * (t + 2 * c))) << c << z << t;
+    EXPECT_TRUE(v->channelHints.empty()) << "one <Channel> for two channels: no hints";
+}
+
+TEST(TiffReader, OmeTiffChannelNamesAndColoursBecomeChannelHints)
+{
+    // Color is a signed 32-bit RGBA integer: -16776961 = 0xFF0000FF (red), 16711935 = 0x00FF00FF (green).
+    TiffSpec spec;
+    spec.bits = 8;
+    spec.description =
+        "<OME><Image ID=\"Image:0\"><Pixels DimensionOrder=\"XYCZT\" SizeX=\"37\" SizeY=\"23\" SizeZ=\"2\" SizeC=\"2\" "
+        "SizeT=\"1\"><Channel ID=\"Channel:0:0\" Name=\"DAPI\" Color=\"-16776961\"/><Channel ID=\"Channel:0:1\" "
+        "Color=\"16711935\" Name=\"GFP\"/></Pixels></Image><Image ID=\"Image:1\"><Pixels SizeX=\"1\" SizeY=\"1\">"
+        "<Channel Name=\"other\" Color=\"-1\"/></Pixels></Image></OME>";
+    const std::string path = tempDirectory() + "/channels.ome.tif";
+    writeTiff(path, std::vector<TiffSpec>(4, spec), [](int p, int, int, int) { return double(p); });
+    osg::ref_ptr<Volume> v = readVolumeFile(path);
+    ASSERT_EQ(v->channels(), 2);
+    ASSERT_EQ(v->channelHints.size(), 2u) << "the second image's channel is not this one's";
+    EXPECT_EQ(v->channelHints[0].name, "DAPI");
+    EXPECT_EQ(v->channelHints[0].colours, std::vector<osg::Vec3f>{osg::Vec3f(1, 0, 0)});
+    EXPECT_EQ(v->channelHints[1].name, "GFP");
+    EXPECT_EQ(v->channelHints[1].colours, std::vector<osg::Vec3f>{osg::Vec3f(0, 1, 0)});
+    EXPECT_FALSE(v->channelHints[0].hasWindow);
 }
 
 TEST(TiffReader, NumberedSlicesStackInNumericNotLexicalOrder)

@@ -181,6 +181,9 @@ TestScene makeScene(const std::string& dir)
     c->setName("c");
     c->setVolume(s.memoryVolume.get());
     c->setTransferFunction(windowed.get());
+    // Its two channels: the first through a TF of its own, the second hidden, through the node's.
+    c->channels = {{true, colourWindowTransferFunction({0, 1, 0}, 2.5, 40.0, 0.25)}, {false, nullptr}};
+    c->setTimePoint(2);  // the last of its three
 
     osg::ref_ptr<osg::MatrixTransform> placed = new osg::MatrixTransform(osg::Matrix::translate(1, 2, 3));
     placed->addChild(c.get());
@@ -248,6 +251,15 @@ void expectSameNode(const osg::Node& a, const osg::Node& b)
         expectSameTransferFunction(*va->getTransferFunction(), *vb->getTransferFunction());
         EXPECT_TRUE(va->settings == vb->settings) << a.getName();
         EXPECT_EQ(va->settings.functions, vb->settings.functions);
+        EXPECT_EQ(va->timePoint(), vb->timePoint()) << a.getName();
+        ASSERT_EQ(va->channels.size(), vb->channels.size()) << a.getName();
+        for (std::size_t c = 0; c < va->channels.size(); ++c) {
+            EXPECT_EQ(va->channels[c].visible, vb->channels[c].visible) << a.getName() << " channel " << c;
+            const TransferFunction* ta = va->channels[c].transferFunction ? va->channels[c].transferFunction.get()
+                                                                          : va->getTransferFunction();
+            ASSERT_TRUE(vb->channels[c].transferFunction) << "written as the node's where it names none";
+            expectSameTransferFunction(*ta, *vb->channels[c].transferFunction);
+        }
     }
     if (auto* pa = dynamic_cast<const ClipPlaneNode*>(&a)) {
         EXPECT_EQ(pa->plane, dynamic_cast<const ClipPlaneNode&>(b).plane);
@@ -504,6 +516,9 @@ TEST_F(SceneFileBad, WrongValueTypesFailNamingTheField)
         {"Resolution 333", "Resolution 1", "resolution must be 2..65536"},
         {"Type uint16", "Type uint12", "unknown voxel type 'uint12'"},
         {"Dims 3 4 5", "Dims 3 4 5.5", "Dims: expected an integer, got '5.5'"},
+        {"Visible TRUE", "Visible maybe", "volren::VolumeNode Channels 0 Visible: expected TRUE or FALSE, got 'maybe'"},
+        {"Channels 2 {", "Channels -2 {", "volren::VolumeNode Channels: -2 is not in [0, 4096]"},
+        {"TimePoint 2", "TimePoint -1", "volren::VolumeNode TimePoint: -1 is not in [0, 1000000000]"},
     };
     for (const auto& [from, to, expected] : cases) {
         const std::string message = expectSceneReadError(edited(from, to));

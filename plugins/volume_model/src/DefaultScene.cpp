@@ -39,6 +39,12 @@ osg::ref_ptr<VolumeNode> makeDefaultVolumeNode(Volume* volume)
     node->setName(volume->sourceFile.empty() ? std::string("volume") : volume->sourceFile);
     node->setVolume(volume);
     node->setTransferFunction(makeTransferFunctionFromHistogram(*volume));
+    // Several channels (a fluorescence stack): each in its own colour over its own window,
+    // emitting unlit (no CT colours, no shading of noise).
+    if (volume->channels() > 1 && !volume->fullResolution()) {
+        node->channels = defaultChannelDisplays(*volume);
+        node->settings.functions["Shading"] = "null";
+    }
     return node;
 }
 

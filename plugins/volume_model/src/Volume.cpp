@@ -37,6 +37,7 @@ Volume::Volume() = default;
 Volume::Volume(const Volume& other, const osg::CopyOp& copyop)
     : osg::Object(other, copyop),
       sourceFile(other.sourceFile),
+      channelHints(other.channelHints),
       _type(other._type),
       _dims(other._dims),
       _channels(other._channels),

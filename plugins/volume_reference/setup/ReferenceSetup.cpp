@@ -4,6 +4,8 @@
 #include <volume_renderer/ShaderFunctionRegistry.h>
 #include <volume_renderer/VolumeScene.h>
 
+#include <volume_model/DefaultScene.h>
+
 #include <stdexcept>
 
 namespace volren {
@@ -12,12 +14,12 @@ namespace {
 
 /// Rasterises `scene` without its volumes for `camera`; fills the options' geometry depth and
 /// colour when anything was drawn.
-void rasteriseGeometry(VolumeScene& scene, const ReferenceScene& content, const ReferenceCamera& camera,
+void rasteriseGeometry(VolumeScene& scene, const ReferenceCamera& camera,
                        ReferenceOptions& options)
 {
+    // The scene's own VolumeNodes (what the reference places may be the channels they are drawn as).
     std::vector<std::pair<osg::Node*, osg::Node::NodeMask>> hidden;
-    for (const auto& placed : content.volumes) {
-        auto* node = const_cast<osg::Node*>(placed.node.get());
+    for (VolumeNode* node : findVolumeNodes(scene)) {
         hidden.emplace_back(node, node->getNodeMask());
         node->setNodeMask(0);
     }
@@ -68,7 +70,7 @@ ReferenceSetup referenceSetup(VolumeScene& scene, const ReferenceCamera& camera,
     ReferenceSetup setup{referenceScene(scene), options};
     if (setup.scene.volumes.empty()) throw std::runtime_error("the scene shows no volume");
     setup.options.lighting = scene.pass.lighting;
-    rasteriseGeometry(scene, setup.scene, camera, setup.options);
+    rasteriseGeometry(scene, camera, setup.options);
     return setup;
 }
 

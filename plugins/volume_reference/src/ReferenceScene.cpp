@@ -49,8 +49,9 @@ ReferenceScene ReferenceScene::collect(const osg::Node& root)
             const osg::Matrixd toWorld = osg::computeLocalToWorld(getNodePath());
             bool skip = drawnAfterOpaque(node.getStateSet());
             if (auto* v = dynamic_cast<VolumeNode*>(&node)) {
-                if (v->getVolume() && v->getTransferFunction() && v->getVolume()->voxelCount() > 0)
-                    scene.volumes.push_back({v, toWorld});
+                for (VolumeNode* drawn : v->drawnNodes())  // itself, or its visible channels
+                    if (drawn->getVolume() && drawn->getTransferFunction() && drawn->getVolume()->voxelCount() > 0)
+                        scene.volumes.push_back({drawn, toWorld});
                 skip = true;
             } else if (auto* c = dynamic_cast<ClipNode*>(&node)) {
                 scene.clips.push_back({c, toWorld});

@@ -95,6 +95,19 @@ osg::ref_ptr<Volume> readOmeZarrVolume(const std::string& path, std::size_t leve
     volume->setRescale(a.rescaleSlope, a.rescaleIntercept);
     setImageUserValues(*volume, image, level, osg::Vec3d(spacing[0], spacing[1], spacing[2]), osg::Vec3d(origin[0], origin[1], origin[2]));
     volume->sourceFile = path;
+    // The omero block's colour, window (stored values) and visibility of each channel.
+    if (a.channels.size() == channels)
+        for (const OmeroChannel& ch : a.channels) {
+            ChannelHint hint;
+            hint.name = ch.label;
+            if (!ch.color.empty()) hint.colours = {osg::Vec3f(ch.red, ch.green, ch.blue)};
+            hint.hasWindow = ch.hasWindow && ch.windowEnd > ch.windowStart;
+            hint.low = ch.windowStart * a.rescaleSlope + a.rescaleIntercept;
+            hint.high = ch.windowEnd * a.rescaleSlope + a.rescaleIntercept;
+            if (hint.low > hint.high) std::swap(hint.low, hint.high);  // a negative slope
+            hint.visible = ch.active;
+            volume->channelHints.push_back(hint);
+        }
     volume->dirty();
     OSG_INFO << path << ": OME-Zarr " << a.version << ", level " << level << " of " << levels << ", " << sizeText(size, blocks) << " "
              << array.metadata().dtype.str() << ", spacing " << spacing[0] << " " << spacing[1] << " " << spacing[2] << " "

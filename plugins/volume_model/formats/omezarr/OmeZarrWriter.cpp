@@ -3,6 +3,7 @@
 #include "MeanPyramid.h"
 #include "OmeZarrVolume.h"
 
+#include <volume_model/ChannelDisplay.h>
 #include <volume_model/LoadProgress.h>
 #include <volume_model/ZarrCodec.h>
 
@@ -13,6 +14,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -160,10 +162,16 @@ private:
         return root;
     }
 
-    /// omero display hints for several channels: a colour each and the channel's value range.
+    /// omero display hints for several channels: a colour each (the file's brightest, else the
+    /// fluorescence palette's), the channel's value range and its display window (the file's, else the range).
     Json omero() const
     {
-        static const char* const colours[] = {"FF0000", "00FF00", "0000FF", "FF00FF", "00FFFF", "FFFF00", "FFFFFF"};
+        auto hex = [](const osg::Vec3f& c) {
+            char text[8];
+            std::snprintf(text, sizeof text, "%02X%02X%02X", int(std::lround(std::clamp(c.x(), 0.f, 1.f) * 255)),
+                          int(std::lround(std::clamp(c.y(), 0.f, 1.f) * 255)), int(std::lround(std::clamp(c.z(), 0.f, 1.f) * 255)));
+            return std::string(text);
+        };
         Json channels = Json::array();
         const std::size_t n = _volume.voxelCount();
         for (int c = 0; c < _volume.channels(); ++c) {
@@ -177,10 +185,18 @@ private:
                 hi = any ? std::max(hi, v) : v;
                 any = true;
             }
-            channels.push_back({{"label", "channel " + std::to_string(c)},
-                                {"color", colours[std::size_t(c) % 7]},
-                                {"active", true},
-                                {"window", {{"min", lo}, {"max", hi}, {"start", lo}, {"end", hi}}}});
+            const ChannelHint* hint =
+                std::size_t(c) < _volume.channelHints.size() ? &_volume.channelHints[std::size_t(c)] : nullptr;
+            double start = lo, end = hi;
+            if (hint && hint->hasWindow && _volume.rescaleSlope() != 0.0) {  // data values back to stored ones
+                start = (hint->low - _volume.rescaleIntercept()) / _volume.rescaleSlope();
+                end = (hint->high - _volume.rescaleIntercept()) / _volume.rescaleSlope();
+                if (start > end) std::swap(start, end);
+            }
+            channels.push_back({{"label", hint && !hint->name.empty() ? hint->name : "channel " + std::to_string(c)},
+                                {"color", hex(hint && !hint->colours.empty() ? hint->colours.back() : channelColour(c))},
+                                {"active", !hint || hint->visible},
+                                {"window", {{"min", lo}, {"max", hi}, {"start", start}, {"end", end}}}});
         }
         return {{"channels", channels}, {"rdefs", {{"model", "color"}}}};
     }

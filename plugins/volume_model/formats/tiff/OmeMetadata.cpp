@@ -2,6 +2,7 @@
 
 #include <volume_model/ParseNumber.h>
 
+#include <cstdint>
 #include <regex>
 #include <stdexcept>
 
@@ -65,6 +66,28 @@ OmeMetadata parseOmeDescription(const std::string& description, const std::strin
     meta.physicalX = lengthAttribute(element, "PhysicalSizeX", name);
     meta.physicalY = lengthAttribute(element, "PhysicalSizeY", name);
     meta.physicalZ = lengthAttribute(element, "PhysicalSizeZ", name);
+    // The <Channel> elements after this <Pixels> (up to the next image's).
+    const std::string after = match.suffix().str();
+    const std::regex channel("<([A-Za-z_][\\w.-]*:)?(Channel|Image)[\\s>][^>]*>");
+    for (auto it = std::sregex_iterator(after.begin(), after.end(), channel); it != std::sregex_iterator(); ++it) {
+        if ((*it)[2].str() == "Image") break;
+        const std::string tag = (*it)[0].str();
+        ChannelHint hint;
+        hint.name = attribute(tag, "Name").value_or("");
+        if (const auto colour = attribute(tag, "Color")) {
+            try {
+                std::size_t used = 0;
+                const long long value = std::stoll(*colour, &used);
+                if (used == colour->size() && value >= INT32_MIN && value <= UINT32_MAX) {
+                    const auto rgba = std::uint32_t(std::int64_t(value) & 0xffffffff);
+                    hint.colours = {osg::Vec3f(float((rgba >> 24) & 0xff) / 255.0f, float((rgba >> 16) & 0xff) / 255.0f,
+                                               float((rgba >> 8) & 0xff) / 255.0f)};
+                }
+            } catch (const std::exception&) {  // a hint only: none
+            }
+        }
+        meta.channels.push_back(hint);
+    }
     const std::regex image("<([A-Za-z_][\\w.-]*:)?Image[\\s>]");
     meta.images = std::size_t(std::distance(std::sregex_iterator(description.begin(), description.end(), image),
                                             std::sregex_iterator()));

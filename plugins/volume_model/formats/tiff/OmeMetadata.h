@@ -1,8 +1,11 @@
 #pragma once
 #include "StackLayout.h"
 
+#include <volume_model/Volume.h>
+
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace volren::tiff {
 
@@ -13,6 +16,9 @@ struct OmeMetadata
     std::string order = "ZCT";                                          ///< DimensionOrder without "XY"
     std::optional<double> physicalX, physicalY, physicalZ;               ///< voxel size, when given
     std::size_t images = 1;                                              ///< <Image> elements in the file
+    /// The first image's <Channel> elements in order: Name and Color (a signed 32-bit RGBA
+    /// integer) as display hints; an unreadable Color gives none.
+    std::vector<ChannelHint> channels;
 };
 
 /// Whether `description` is OME-XML (holds an <OME> root element).

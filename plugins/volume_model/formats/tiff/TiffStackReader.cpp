@@ -1,5 +1,6 @@
 #include "TiffStackReader.h"
 
+#include "ImageJDisplay.h"
 #include "ImageJMetadata.h"
 #include "OmeMetadata.h"
 #include "SpacingOption.h"
@@ -33,6 +34,8 @@ struct FirstPage
 {
     std::string description;
     std::optional<double> xSpacing, ySpacing;
+    std::vector<std::uint32_t> imageJCounts;  ///< IJMetadata byte counts (tag 50838), when present
+    std::vector<std::uint8_t> imageJData;     ///< IJMetadata (tag 50839), when present
 };
 
 std::optional<double> spacingFromResolution(TIFF* tif, ttag_t tag)
@@ -50,6 +53,12 @@ FirstPage readFirstPage(TIFF* tif)
     if (TIFFGetField(tif, TIFFTAG_IMAGEDESCRIPTION, &text) && text) first.description = text;
     first.xSpacing = spacingFromResolution(tif, TIFFTAG_XRESOLUTION);
     first.ySpacing = spacingFromResolution(tif, TIFFTAG_YRESOLUTION);
+    // ImageJ's private tags, which libtiff keeps as anonymous fields (a count, then the values).
+    std::uint32_t count = 0;
+    const std::uint32_t* counts = nullptr;
+    const std::uint8_t* data = nullptr;
+    if (TIFFGetField(tif, imageJMetadataCountsTag, &count, &counts) && counts) first.imageJCounts.assign(counts, counts + count);
+    if (TIFFGetField(tif, imageJMetadataTag, &count, &data) && data) first.imageJData.assign(data, data + count);
     return first;
 }
 
@@ -110,6 +119,7 @@ osg::ref_ptr<Volume> readTiffStack(const std::vector<std::string>& files, const 
     StackLayout layout;
     layout.slices = pages.size();
     std::optional<double> zSpacing;
+    std::vector<ChannelHint> displayHints;
     std::string metadata = files.size() > 1 ? "numbered slices" : "plain TIFF";
     if (files.size() == 1 && isOmeDescription(first.description)) {
         const OmeMetadata ome = parseOmeDescription(first.description, name);
@@ -122,11 +132,14 @@ osg::ref_ptr<Volume> readTiffStack(const std::vector<std::string>& files, const 
         if (ome.physicalY) first.ySpacing = ome.physicalY;
         zSpacing = ome.physicalZ;
         metadata = "OME-XML, DimensionOrder XY" + ome.order;
+        if (spp == 1 && ome.channels.size() == layout.channels) displayHints = ome.channels;
     } else if (isImageJDescription(first.description)) {
         const ImageJMetadata ij = parseImageJDescription(first.description, name);
         if (files.size() == 1) layout = imageJLayout(ij, pages.size(), name);
         zSpacing = ij.spacing;
         metadata = "ImageJ" + std::string(ij.unit.empty() ? "" : ", unit " + ij.unit);
+        if (!first.imageJData.empty())
+            displayHints = parseImageJDisplay(first.imageJCounts, first.imageJData, layout.channels * spp, name);
     }
 
     const int channels = int(layout.channels * spp);
@@ -170,6 +183,7 @@ osg::ref_ptr<Volume> readTiffStack(const std::vector<std::string>& files, const 
     volume->dirty();
     volume->sourceFile = name;
     volume->setName(name);
+    volume->channelHints = std::move(displayHints);
     if (format.widenToFloat) OSG_NOTICE << name << ": 32-bit integer samples stored as float32" << std::endl;
     OSG_INFO << name << ": " << metadata << ", " << dims.x() << "x" << dims.y() << "x" << dims.z() << " "
              << voxelTypeName(format.type) << ", " << channels << " channel(s), " << layout.frames << " frame(s)" << std::endl;

@@ -20,7 +20,9 @@ osg::ref_ptr<osg::Group> makeSceneRoot();
 osg::ref_ptr<osg::Group> makeDefaultScene(Volume* volume);
 /// The default scene's light: directional along the view, fixed to the camera (light 0).
 osg::ref_ptr<osg::LightSource> makeHeadlight();
-/// A VolumeNode showing `volume` (named by its file) with a transfer function from its histogram.
+/// A VolumeNode showing `volume` (named by its file) with a transfer function from its histogram;
+/// a volume of several channels (held whole) shows them all, each in its default colour over its
+/// percentile window (defaultChannelDisplays), unshaded (Shading null: fluorescence emits).
 osg::ref_ptr<VolumeNode> makeDefaultVolumeNode(Volume* volume);
 
 /// First VolumeNode found below `root` (depth first), or null.

@@ -8,13 +8,9 @@
 
 namespace volren {
 
-/// Time point `t` (from 0) of `volume` as a volume of its own: every channel of that time
-/// point, with the spacing, rescale and file name kept. Throws std::out_of_range naming the
-/// file and the count when `t` is not a time point of it.
-osg::ref_ptr<Volume> timePointOf(const Volume& volume, int t);
-
 /// The time series shown below a scene root: every VolumeNode whose volume has several time
-/// points, kept whole here while the nodes show one time point each (only it reaches the GPU).
+/// points. Each node keeps its whole volume and shows one time point (VolumeNode::setTimePoint;
+/// only that time point's blocks reach the GPU).
 class TimeSeries
 {
 public:
@@ -27,12 +23,7 @@ public:
     void show(int t);
 
 private:
-    struct Series
-    {
-        osg::ref_ptr<VolumeNode> node;
-        osg::ref_ptr<Volume> whole;
-    };
-    std::vector<Series> _series;
+    std::vector<osg::ref_ptr<VolumeNode>> _nodes;
 };
 
 }  // namespace volren

@@ -6,6 +6,7 @@
 #include <osg/Object>
 #include <osg/ref_ptr>
 #include <osg/Vec3d>
+#include <osg/Vec3f>
 #include <osg/Vec3i>
 
 #include <cstdint>
@@ -15,6 +16,17 @@
 #include <vector>
 
 namespace volren {
+
+/// What a file says about showing one of its channels (ImageJ hyperstack LUTs and display
+/// ranges, OME-Zarr omero channels); every part optional.
+struct ChannelHint
+{
+    std::string name;               ///< the channel's label; empty when the file gives none
+    std::vector<osg::Vec3f> colours;  ///< its colour table from dark to bright, [0, 1]; empty: none
+    bool hasWindow = false;         ///< whether `low`, `high` hold its display range
+    double low = 0.0, high = 0.0;   ///< display range in data values
+    bool visible = true;            ///< shown by default
+};
 
 /// A scalar voxel grid: stored values, geometry and the mapping to data units. No GL.
 /// Voxel (i,j,k) is at index i + dims.x*(j + dims.y*k); data value = stored*slope + intercept.
@@ -86,6 +98,8 @@ public:
 
     /// File this volume was read from (empty when built in memory).
     std::string sourceFile;
+    /// How the file shows each channel, where it says (index = channel; may be shorter, or empty).
+    std::vector<ChannelHint> channelHints;
 
     /// Where the finer levels of a volume opened lazily live (files larger than the RAM budget):
     /// this Volume's voxels are then level `fullResolutionLevel()` of the source, a preview that

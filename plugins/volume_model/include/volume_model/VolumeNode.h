@@ -1,4 +1,5 @@
 #pragma once
+#include <volume_model/ChannelDisplay.h>
 #include <volume_model/RenderSettings.h>
 #include <volume_model/TransferFunction.h>
 #include <volume_model/Volume.h>
@@ -6,6 +7,9 @@
 #include <osg/BoundingBox>
 #include <osg/Node>
 #include <osg/NodeVisitor>
+
+#include <mutex>
+#include <vector>
 
 namespace volren {
 
@@ -32,6 +36,37 @@ public:
     /// Per-node render settings; read by the renderer every frame.
     RenderSettings settings;
 
+    /// How each channel of the volume is shown (index = channel). With at most one entry, or a
+    /// single-channel volume, the node shows channel 0 through its own transfer function (what
+    /// older scenes say); with more, every visible channel is drawn, all in one ray.
+    std::vector<ChannelDisplay> channels;
+    /// Shows time point `t` (from 0) of a time-series volume; a volume with fewer time points
+    /// shows its last. Throws std::out_of_range for a negative `t`.
+    void setTimePoint(int t);
+    int timePoint() const { return _timePoint; }  ///< the time point asked for (see setTimePoint)
+    /// The time point drawn: timePoint() within the volume's time points (0 without a volume).
+    int shownTimePoint() const;
+
+    /// Shows exactly the channels `shown` (from 0) and hides the others; a node with no channel
+    /// displays gets one per channel, through its own transfer function. Throws
+    /// std::out_of_range naming the node when a channel does not exist.
+    void showChannels(const std::vector<int>& shown);
+    /// Whether it shows several channels (see `channels`).
+    bool showsChannels() const;
+    /// Whether it is drawn as nodes of its volume's blocks (channelNode) rather than itself: when
+    /// it shows several channels or a time point after the first. Never for a volume opened
+    /// lazily, whose source holds one channel and time point.
+    bool drawsBlocks() const;
+    /// The node that draws channel `c` at shownTimePoint() when drawsBlocks(): that block of the
+    /// volume (copied once per change of the volume or the time point: only the shown blocks
+    /// reach the GPU), the channel's transfer function (the node's where it names none), this
+    /// node's settings and mask, named "<name> [channel c]". The same object for the same node
+    /// and channel, so that a renderer keeps its programs.
+    VolumeNode* channelNode(int c) const;
+    /// The nodes a renderer draws for this one: itself, or channelNode(c) for each visible
+    /// channel (channel 0 when it shows one channel).
+    std::vector<VolumeNode*> drawnNodes();
+
     /// Box of the volume in the node's local coordinates (invalid without a volume).
     osg::BoundingBox localBox() const;
     /// Bounding sphere of localBox().
@@ -43,6 +78,17 @@ protected:
 private:
     osg::ref_ptr<Volume> _volume;
     osg::ref_ptr<TransferFunction> _transferFunction;
+    int _timePoint = 0;
+    /// A channelNode() and the block (volume, its modified count, time point) its voxels are.
+    struct BlockNode
+    {
+        osg::ref_ptr<VolumeNode> node;
+        const Volume* volume = nullptr;
+        unsigned int modified = 0;
+        int timePoint = -1;
+    };
+    mutable std::vector<BlockNode> _blockNodes;  ///< per channel
+    mutable std::mutex _blockMutex;
 };
 
 }  // namespace volren

@@ -44,7 +44,9 @@ struct ReferenceScene
         /// sets it from the traits of the renderer's Shadowing choice (shadowsGeometry).
         bool shadowsGeometry = false;
     };
-    std::vector<Placed> volumes;  ///< VolumeNodes with a volume and a transfer function
+    /// VolumeNodes with a volume and a transfer function (a multi-channel node as the nodes of
+    /// its visible channels, VolumeNode::drawnNodes, as the renderer draws it)
+    std::vector<Placed> volumes;
     std::vector<Placed> clips;    ///< ClipNodes
     /// osg::LightSources with a light; ABSOLUTE_RF ones keep eye coordinates (localToWorld is
     /// then the identity and the camera places them).

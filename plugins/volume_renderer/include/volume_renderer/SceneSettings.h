@@ -23,8 +23,10 @@ void applyNodeSetting(RenderSettings& settings, const std::string& key, const st
                       const CompositionPolicy& policy);
 
 /// The one router of `volren render --set KEY=VALUE` (and bench configurations): a pass setting
-/// goes to `scene.pass`, any other to every VolumeNode below `scene`. Throws SettingError
-/// ("KEY=VALUE: why").
+/// goes to `scene.pass`; `channels` (all, or channel numbers 0,2) to every multi-channel
+/// VolumeNode below `scene` (VolumeNode::showChannels), `time` (a time point) to every
+/// time series (TimeSeries::show); any other to every VolumeNode below `scene`'s settings.
+/// Throws SettingError ("KEY=VALUE: why").
 void applySetting(VolumeScene& scene, const std::string& key, const std::string& value);
 
 /// `scene` when it is a VolumeScene, else a new VolumeScene holding it.

@@ -53,8 +53,9 @@ private:
     void visit(osg::Node& node)
     {
         if (auto* v = dynamic_cast<VolumeNode*>(&node)) {
-            if (v->getVolume() && v->getTransferFunction() && v->getVolume()->voxelCount() > 0)
-                volumes.emplace_back(v, _matrix);
+            for (VolumeNode* drawn : v->drawnNodes())  // itself, or its visible channels (one ray)
+                if (drawn->getVolume() && drawn->getTransferFunction() && drawn->getVolume()->voxelCount() > 0)
+                    volumes.emplace_back(drawn, _matrix);
             return;
         }
         if (auto* c = dynamic_cast<ClipNode*>(&node)) {

@@ -27,7 +27,8 @@ struct VolumeCandidate
     osg::ref_ptr<osg::Texture> geometryShadowMap = {};  ///< those maps, where its Shadowing reads them
 };
 
-/// The volumes (with a volume, a TF and voxels), lights, clip shapes and opaque geometry below
+/// The volumes (with a volume, a TF and voxels; a multi-channel node as the nodes of its visible
+/// channels, which share its box and so one ray), lights, clip shapes and opaque geometry below
 /// `scene`'s children that `mask` lets through; lights in eye coordinates are placed by the
 /// camera's `modelView`. Warns once per call when more lights than a volume takes are found
 /// and `lighting` is on.

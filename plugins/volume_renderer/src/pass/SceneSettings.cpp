@@ -2,8 +2,11 @@
 #include <volume_renderer/Slots.h>
 
 #include <volume_model/DefaultScene.h>
+#include <volume_model/ParseNumber.h>
 #include <volume_model/RenderSettings.h>
+#include <volume_model/TimeSeries.h>
 
+#include <cmath>
 #include <iomanip>
 #include <sstream>
 
@@ -26,12 +29,67 @@ void applyNodeSetting(RenderSettings& settings, const std::string& key, const st
     if (!settings.set(key, value, error)) throw SettingError(error);
 }
 
+namespace {
+
+/// The whole of `text` as a count from 0 (a channel, a time point), or -1.
+int countFrom(const std::string& text)
+{
+    double v = 0.0;
+    if (!parseFiniteNumber(text, v) || v < 0.0 || v != std::floor(v) || v > 1e9) return -1;
+    return int(v);
+}
+
+/// `channels=all|C,...`: the channels every multi-channel volume below `scene` shows.
+void showChannels(VolumeScene& scene, const std::string& value)
+{
+    std::vector<int> shown;
+    const bool all = value == "all";
+    if (!all) {
+        std::stringstream list(value);
+        for (std::string item; std::getline(list, item, ',');) {
+            const int c = countFrom(item);
+            if (c < 0)
+                throw SettingError("expected 'all' or channel numbers from 0 separated by commas, got '" + value + "'");
+            shown.push_back(c);
+        }
+        if (shown.empty()) throw SettingError("expected 'all' or channel numbers from 0 separated by commas");
+    }
+    for (VolumeNode* node : findVolumeNodes(scene)) {
+        const int count = node->getVolume() ? node->getVolume()->channels() : 0;
+        if (count < 2) continue;
+        std::vector<int> these = shown;
+        if (all)
+            for (int c = 0; c < count; ++c) these.push_back(c);
+        try {
+            node->showChannels(these);
+        } catch (const std::out_of_range& e) {
+            throw SettingError(e.what());
+        }
+    }
+}
+
+}  // namespace
+
 void applySetting(VolumeScene& scene, const std::string& key, const std::string& value)
 {
     try {
         std::string error;
         if (PassSettings::isKey(key)) {
             if (!scene.pass.set(key, value, error)) throw SettingError(error);
+            return;
+        }
+        if (key == "channels") {
+            showChannels(scene, value);
+            return;
+        }
+        if (key == "time") {
+            const int t = countFrom(value);
+            if (t < 0) throw SettingError("expected a time point from 0, got '" + value + "'");
+            try {
+                TimeSeries(scene).show(t);
+            } catch (const std::out_of_range& e) {
+                throw SettingError(e.what());
+            }
             return;
         }
         RenderSettings probe;  // checked once, even when the scene has no volume
@@ -59,6 +117,11 @@ std::string settingsHelp(const CompositionPolicy& policy)
     out << "Per-volume settings (--set KEY=VALUE; value shown is the default, empty = chosen by the scene):\n";
     for (const auto& [key, what] : RenderSettings::keys())
         out << "  " << std::left << std::setw(18) << key << std::setw(14) << defaults.get(key) << what << "\n";
+    out << "Scene settings:\n";
+    out << "  " << std::left << std::setw(18) << "channels" << std::setw(14) << "all"
+        << "channels multi-channel volumes show, all in one ray: all, or numbers from 0 (0,2)\n";
+    out << "  " << std::left << std::setw(18) << "time" << std::setw(14) << "0"
+        << "time point time-series volumes show (from 0; a shorter series shows its last)\n";
     out << "Pass settings:\n";
     const PassSettings pass;
     for (const auto& [key, what] : PassSettings::keys())
