@@ -49,7 +49,7 @@ protected:
     }
 };
 
-TEST_F(TimeSeriesRender, EachTimePointShowsItsOwnVoxelsAndOnlyThoseReachTheGpu)
+TEST_F(TimeSeriesRender, EachTimePointShowsItsOwnVoxelsAndOnlyItsBlockIsDrawn)
 {
     osg::ref_ptr<Volume> series = movingSlabs(1);
     osg::ref_ptr<VolumeNode> node = volumeNode(series.get(), colourWindowTransferFunction({1, 0.5f, 0.25f}, 0, 100, alpha).get());
@@ -88,6 +88,14 @@ TEST_F(TimeSeriesRender, AChannelOfATimePointIsThatBlock)
     for (int c = 0; c < 2; ++c) node->channels.push_back({true, colourWindowTransferFunction(channelColour(c), 0, 100, alpha)});
     osg::ref_ptr<VolumeScene> scene = new VolumeScene;
     scene->addChild(node.get());
+    // Stepping through time copies (and so uploads) the shown channels of each new time point once.
+    for (int t : {0, 1, 2}) {
+        const std::size_t before = node->blockCopies();
+        TimeSeries(*scene).show(t);
+        renderOrthoFromPlusZ(scene.get(), 8, 8, 16.0);
+        renderOrthoFromPlusZ(scene.get(), 8, 8, 16.0);  // a second frame of the same time point copies nothing
+        EXPECT_EQ(node->blockCopies() - before, 2u) << "time point " << t;
+    }
     TimeSeries(*scene).show(1);
     applySetting(*scene, "channels", "1");
     expectSlab(renderOrthoFromPlusZ(scene.get(), 32, 32, 16.0), 2, channelColour(1), "channel 1 at time point 1");

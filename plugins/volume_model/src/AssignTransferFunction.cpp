@@ -16,6 +16,8 @@ void assignTransferFunctionFile(const std::vector<VolumeNode*>& nodes, const std
         } else {
             node->setTransferFunction(tf.get());
         }
+        // Every channel then shows through it (their own transfer functions are dropped).
+        for (ChannelDisplay& channel : node->channels) channel.transferFunction = nullptr;
     }
 }
 

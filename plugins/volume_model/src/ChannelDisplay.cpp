@@ -49,9 +49,11 @@ osg::ref_ptr<TransferFunction> colourWindowTransferFunction(const osg::Vec3& col
     return tf;
 }
 
-std::pair<double, double> channelWindow(const Volume& volume, int c, double low, double high)
+namespace {
+
+/// The window of a channel's histogram `h` between percentiles `low` and `high` (0..100).
+std::pair<double, double> windowOf(const Histogram& h, double low, double high)
 {
-    const Histogram h = channelOf(volume, c)->histogram(1024);
     double lo = h.percentile(low / 100.0), hi = h.percentile(high / 100.0);
     if (!(hi > lo)) {  // a constant channel (or one value dominating): one bin around it
         const double width = std::max(h.binWidth(), std::max(1.0, std::abs(lo)) * 1e-6);
@@ -59,6 +61,13 @@ std::pair<double, double> channelWindow(const Volume& volume, int c, double low,
         hi = lo + width;
     }
     return {lo, hi};
+}
+
+}  // namespace
+
+std::pair<double, double> channelWindow(const Volume& volume, int c, double low, double high)
+{
+    return windowOf(channelOf(volume, c)->histogram(1024), low, high);
 }
 
 namespace {
@@ -100,9 +109,10 @@ std::vector<ChannelDisplay> defaultChannelDisplays(const Volume& volume)
         if (hint && hint->hasWindow && !wholeTypeRange(volume.type(), hint->low, hint->high)) {
             low = hint->low, high = hint->high;  // the file's display range
         } else {
-            std::tie(low, high) = channelWindow(volume, c);
+            const Histogram h = channelOf(volume, c)->histogram(1024);
+            std::tie(low, high) = windowOf(h, 0.5, 99.5);
             // Transparent up to the background (Otsu's threshold of the channel) where it lies in the window.
-            const double background = channelOf(volume, c)->histogram(1024).otsuThreshold();
+            const double background = h.otsuThreshold();
             if (background > low && background < high) low = background;
         }
         ChannelDisplay display;

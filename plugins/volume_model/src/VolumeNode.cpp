@@ -65,8 +65,9 @@ VolumeNode* VolumeNode::channelNode(int c) const
     if (!block.node) block.node = new VolumeNode;
     VolumeNode& node = *block.node;
     const int t = shownTimePoint();
-    if (block.volume != _volume.get() || block.modified != _volume->modifiedCount() || block.timePoint != t) {
+    if (block.volume.get() != _volume.get() || block.modified != _volume->modifiedCount() || block.timePoint != t) {
         node.setVolume(channelOf(*_volume, c, t).get());
+        ++_blockCopies;
         block.volume = _volume.get();
         block.modified = _volume->modifiedCount();
         block.timePoint = t;
@@ -77,8 +78,8 @@ VolumeNode* VolumeNode::channelNode(int c) const
                                ? channels[std::size_t(c)].transferFunction.get()
                                : _transferFunction.get();
     if (node.getTransferFunction() != tf) node.setTransferFunction(tf);
-    node.settings = settings;
-    node.setNodeMask(getNodeMask());
+    if (!(node.settings == settings)) node.settings = settings;  // written only when changed (others may read it)
+    if (node.getNodeMask() != getNodeMask()) node.setNodeMask(getNodeMask());
     return &node;
 }
 

@@ -2,6 +2,7 @@
 
 #include <volume_model/OpaqueGeometry.h>
 
+#include <osg/Notify>
 #include <osg/KdTree>
 #include <osg/LightSource>
 #include <osg/NodeVisitor>
@@ -49,9 +50,13 @@ ReferenceScene ReferenceScene::collect(const osg::Node& root)
             const osg::Matrixd toWorld = osg::computeLocalToWorld(getNodePath());
             bool skip = drawnAfterOpaque(node.getStateSet());
             if (auto* v = dynamic_cast<VolumeNode*>(&node)) {
-                for (VolumeNode* drawn : v->drawnNodes())  // itself, or its visible channels
-                    if (drawn->getVolume() && drawn->getTransferFunction() && drawn->getVolume()->voxelCount() > 0)
-                        scene.volumes.push_back({drawn, toWorld});
+                try {
+                    for (VolumeNode* drawn : v->drawnNodes())  // itself, or its visible channels
+                        if (drawn->getVolume() && drawn->getTransferFunction() && drawn->getVolume()->voxelCount() > 0)
+                            scene.volumes.push_back({drawn, toWorld});
+                } catch (const std::exception& e) {  // copying its blocks out (memory): left out, as the renderer does
+                    OSG_WARN << "volren reference: volume '" << v->getName() << "' left out: " << e.what() << std::endl;
+                }
                 skip = true;
             } else if (auto* c = dynamic_cast<ClipNode*>(&node)) {
                 scene.clips.push_back({c, toWorld});

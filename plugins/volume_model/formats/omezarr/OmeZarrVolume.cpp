@@ -101,7 +101,10 @@ osg::ref_ptr<Volume> readOmeZarrVolume(const std::string& path, std::size_t leve
             ChannelHint hint;
             hint.name = ch.label;
             if (!ch.color.empty()) hint.colours = {osg::Vec3f(ch.red, ch.green, ch.blue)};
-            hint.hasWindow = ch.hasWindow && ch.windowEnd > ch.windowStart;
+            // A window over the channel's whole range (start = min, end = max, as writers put by
+            // default) sets nothing: the channel gets its percentile window.
+            hint.hasWindow = ch.hasWindow && ch.windowEnd > ch.windowStart &&
+                             !(ch.windowStart <= ch.windowMin && ch.windowEnd >= ch.windowMax);
             hint.low = ch.windowStart * a.rescaleSlope + a.rescaleIntercept;
             hint.high = ch.windowEnd * a.rescaleSlope + a.rescaleIntercept;
             if (hint.low > hint.high) std::swap(hint.low, hint.high);  // a negative slope

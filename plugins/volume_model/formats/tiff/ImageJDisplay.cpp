@@ -46,7 +46,9 @@ std::vector<ChannelHint> parse(const std::vector<std::uint32_t>& counts, const s
     std::vector<ChannelHint> hints(channels);
     std::size_t at = header, entry = 1;
     for (std::size_t h = 4; h < header; h += 8) {
-        const std::string type(data.begin() + std::ptrdiff_t(h), data.begin() + std::ptrdiff_t(h + 4));
+        // The type is a 4-character code stored as an int: reversed in a little-endian block.
+        std::string type(data.begin() + std::ptrdiff_t(h), data.begin() + std::ptrdiff_t(h + 4));
+        if (!in.bigEndian) type.assign(type.rbegin(), type.rend());
         const std::uint64_t n = in.unsignedAt(h + 4, 4);
         for (std::uint64_t k = 0; k < n; ++k, ++entry) {
             if (entry >= counts.size()) throw std::runtime_error("more entries than byte counts");

@@ -78,7 +78,9 @@ OmeMetadata parseOmeDescription(const std::string& description, const std::strin
             try {
                 std::size_t used = 0;
                 const long long value = std::stoll(*colour, &used);
-                if (used == colour->size() && value >= INT32_MIN && value <= UINT32_MAX) {
+                // -1 (opaque white) is OME's default, which says nothing.
+                if (used == colour->size() && value >= INT32_MIN && value <= UINT32_MAX && value != -1 &&
+                    value != 0xffffffffLL) {
                     const auto rgba = std::uint32_t(std::int64_t(value) & 0xffffffff);
                     hint.colours = {osg::Vec3f(float((rgba >> 24) & 0xff) / 255.0f, float((rgba >> 16) & 0xff) / 255.0f,
                                                float((rgba >> 8) & 0xff) / 255.0f)};

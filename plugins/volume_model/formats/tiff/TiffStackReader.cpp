@@ -8,6 +8,7 @@
 #include "TiffFile.h"
 #include "TiffPage.h"
 
+#include <algorithm>
 #include <volume_model/LoadProgress.h>
 
 #include <osg/Notify>
@@ -54,11 +55,18 @@ FirstPage readFirstPage(TIFF* tif)
     first.xSpacing = spacingFromResolution(tif, TIFFTAG_XRESOLUTION);
     first.ySpacing = spacingFromResolution(tif, TIFFTAG_YRESOLUTION);
     // ImageJ's private tags, which libtiff keeps as anonymous fields (a count, then the values).
+    // Their values are only read as the types ImageJ writes (a file may declare any type).
+    auto typed = [tif](unsigned int tag, std::initializer_list<TIFFDataType> types) {
+        const TIFFField* field = TIFFFindField(tif, tag, TIFF_ANY);
+        return field && std::find(types.begin(), types.end(), TIFFFieldDataType(field)) != types.end();
+    };
     std::uint32_t count = 0;
     const std::uint32_t* counts = nullptr;
     const std::uint8_t* data = nullptr;
-    if (TIFFGetField(tif, imageJMetadataCountsTag, &count, &counts) && counts) first.imageJCounts.assign(counts, counts + count);
-    if (TIFFGetField(tif, imageJMetadataTag, &count, &data) && data) first.imageJData.assign(data, data + count);
+    if (typed(imageJMetadataCountsTag, {TIFF_LONG}) && TIFFGetField(tif, imageJMetadataCountsTag, &count, &counts) && counts)
+        first.imageJCounts.assign(counts, counts + count);
+    if (typed(imageJMetadataTag, {TIFF_BYTE, TIFF_UNDEFINED}) && TIFFGetField(tif, imageJMetadataTag, &count, &data) && data)
+        first.imageJData.assign(data, data + count);
     return first;
 }
 

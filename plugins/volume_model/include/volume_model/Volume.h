@@ -32,7 +32,7 @@ struct ChannelHint
 /// Voxel (i,j,k) is at index i + dims.x*(j + dims.y*k); data value = stored*slope + intercept.
 /// Files with several channels (multi-channel confocal stacks) or time points keep them all:
 /// the voxels are channels() x frames() blocks of dims, block (c, t) at index t*channels() + c;
-/// data() is block (0, 0), the one the renderer shows.
+/// data() is block (0, 0); a VolumeNode shows the blocks of its channels at its time point.
 class Volume : public osg::Object
 {
 public:

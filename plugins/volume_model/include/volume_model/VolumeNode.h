@@ -63,6 +63,9 @@ public:
     /// node's settings and mask, named "<name> [channel c]". The same object for the same node
     /// and channel, so that a renderer keeps its programs.
     VolumeNode* channelNode(int c) const;
+    /// Blocks channelNode() has copied out so far: each is one volume texture a renderer uploads
+    /// (stepping a time series copies the shown channels of the new time point, nothing else).
+    std::size_t blockCopies() const { return _blockCopies; }
     /// The nodes a renderer draws for this one: itself, or channelNode(c) for each visible
     /// channel (channel 0 when it shows one channel).
     std::vector<VolumeNode*> drawnNodes();
@@ -83,11 +86,12 @@ private:
     struct BlockNode
     {
         osg::ref_ptr<VolumeNode> node;
-        const Volume* volume = nullptr;
+        osg::ref_ptr<const Volume> volume;  ///< held: a new volume never takes its address
         unsigned int modified = 0;
         int timePoint = -1;
     };
     mutable std::vector<BlockNode> _blockNodes;  ///< per channel
+    mutable std::size_t _blockCopies = 0;
     mutable std::mutex _blockMutex;
 };
 

@@ -53,9 +53,13 @@ private:
     void visit(osg::Node& node)
     {
         if (auto* v = dynamic_cast<VolumeNode*>(&node)) {
-            for (VolumeNode* drawn : v->drawnNodes())  // itself, or its visible channels (one ray)
-                if (drawn->getVolume() && drawn->getTransferFunction() && drawn->getVolume()->voxelCount() > 0)
-                    volumes.emplace_back(drawn, _matrix);
+            try {
+                for (VolumeNode* drawn : v->drawnNodes())  // itself, or its visible channels (one ray)
+                    if (drawn->getVolume() && drawn->getTransferFunction() && drawn->getVolume()->voxelCount() > 0)
+                        volumes.emplace_back(drawn, _matrix);
+            } catch (const std::exception& e) {  // copying its blocks out (memory): not drawn
+                OSG_WARN << "volren: cannot draw volume '" << v->getName() << "': " << e.what() << std::endl;
+            }
             return;
         }
         if (auto* c = dynamic_cast<ClipNode*>(&node)) {

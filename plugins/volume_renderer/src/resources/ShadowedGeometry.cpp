@@ -58,6 +58,7 @@ void ShadowedGeometry::cull(osgUtil::CullVisitor& cv, const void* node, const os
         triangle.setUseDisplayList(false);
         triangle.setDrawCallback(new MatrixUniforms);
         triangle.setComputeBoundingBoxCallback(new InitialBoundOnly);
+        triangle.setCullingActive(false);  // drawn wherever the volume is: its shadow may be in view when it is not
         osg::StateSet* ss = triangle.getOrCreateStateSet();
         ss->setAttributeAndModes(_program.get(), osg::StateAttribute::ON);
         // colour *= the fragment's colour; alpha (coverage) kept.
