@@ -29,18 +29,23 @@ int lightVolumeChannels(std::size_t lights)
     return n == 3 ? 4 : n;
 }
 
+osg::Vec4d lightInTextureSpace(const LightInfo& light, const osg::Vec3d& worldSize)
+{
+    const osg::Vec4d& l = light.position;
+    osg::Vec4d t(0, 0, 0, l.w() == 0.0 ? 0.0 : 1.0);
+    for (int a = 0; a < 3; ++a) t[a] = l.w() == 0.0 ? l[a] / worldSize[a] : l[a] / l.w() / worldSize[a] + 0.5;
+    return t;
+}
+
 std::vector<BuildDispatch> lightVolumePlan(const std::vector<LightInfo>& lights, const osg::Vec3d& worldSize,
                                            const osg::Vec3i& dims)
 {
     std::vector<BuildDispatch> plan;
     for (std::size_t i = 0; i < lights.size() && i < std::size_t(maxLights); ++i) {
-        const osg::Vec4d& light = lights[i].position;
         // Where the light is in texture space (a point light) or where it comes from (directional).
-        osg::Vec3d towards, lightTex;
-        for (int a = 0; a < 3; ++a) {
-            lightTex[a] = light[a] / worldSize[a] + 0.5;
-            towards[a] = light.w() == 0.0 ? light[a] / worldSize[a] : lightTex[a] - 0.5;
-        }
+        const osg::Vec4d light = lightInTextureSpace(lights[i], worldSize);
+        osg::Vec3d towards(light.x(), light.y(), light.z());
+        if (light.w() != 0.0) towards -= osg::Vec3d(0.5, 0.5, 0.5);
         int axis = 2;
         double best = -1.0;
         for (int a = 0; a < 3; ++a)
@@ -51,7 +56,7 @@ std::vector<BuildDispatch> lightVolumePlan(const std::vector<LightInfo>& lights,
         if (light.w() == 0.0) {
             if (towards[axis] > 0.0) std::reverse(slices.begin(), slices.end());
         } else {  // outwards from the light's plane, which may cut the volume
-            const double c = lightTex[axis];
+            const double c = light[axis];
             std::stable_sort(slices.begin(), slices.end(),
                              [&](int a, int b) { return std::abs((a + 0.5) / n - c) < std::abs((b + 0.5) / n - c); });
         }

@@ -10,6 +10,10 @@ namespace volren {
 /// Lights a light volume holds (one channel each); further lights get none.
 constexpr int lightVolumeMaxLights = 4;
 
+/// `light` (node coordinates) in the texture space of a box of `worldSize` centred on the node's
+/// origin: a point light's position (w = 1), or a directional light's direction (w = 0).
+osg::Vec4d lightInTextureSpace(const LightInfo& light, const osg::Vec3d& worldSize);
+
 /// The texels per axis of the light volume of a volume of `dims` voxels at `scale` (0, 1]:
 /// each axis scaled and rounded, at least 2.
 osg::Vec3i lightVolumeDims(const osg::Vec3i& dims, double scale);

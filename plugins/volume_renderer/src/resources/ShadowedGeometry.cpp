@@ -91,10 +91,7 @@ void ShadowedGeometry::cull(osgUtil::CullVisitor& cv, const void* node, const os
     ss->getOrCreateUniform("volren_totalLights", osg::Uniform::INT)->set(int(lights.size()));
     osg::Uniform* placed = ss->getOrCreateUniform("volren_textureLights", osg::Uniform::FLOAT_VEC4, lightVolumeMaxLights);
     for (int i = 0; i < held; ++i) {  // in texture space, as the light volume's build places them
-        const osg::Vec4d& l = lights[std::size_t(i)].position;
-        osg::Vec4f t(0, 0, 0, float(l.w() == 0.0 ? 0.0 : 1.0));
-        for (int a = 0; a < 3; ++a) t[a] = float(l.w() == 0.0 ? l[a] / worldSize[a] : l[a] / l.w() / worldSize[a] + 0.5);
-        placed->setElement(unsigned(i), t);
+        placed->setElement(unsigned(i), osg::Vec4f(lightInTextureSpace(lights[std::size_t(i)], worldSize)));
     }
     pass.lastCull = cullCount;
     pass.transform->setMatrix(matrix);
