@@ -16,7 +16,7 @@ packages=(
   libegl-dev libegl-mesa0 libgl-dev libgl1-mesa-dri libgbm1
   mricron-data
   xvfb xauth netpbm
-  libimgui-dev
+  libimgui-dev fonts-dejavu-core
   python3-dev python3-numpy pybind11-dev
 )
 

@@ -116,6 +116,8 @@ RenderOptions parseRenderOptions(const std::vector<std::string>& args, bool requ
         } else if (a == "--frames") o.frames = parseInt(value(i), "--frames", 1, 100000);
         else if (a == "--samples") o.samples = parseInt(value(i), "--samples", 1, 64);
         else if (a == "--screenshot") o.screenshot = value(i);
+        else if (a == "--scale-bar" || a == "--no-scale-bar") o.scaleBar = a == "--scale-bar";
+        else if (a == "--axes" || a == "--no-axes") o.axes = a == "--axes";
         else if (a == "--stats") o.statsFile = value(i);
         else if (a == "-O" || a == "--option") o.readerOptions += (o.readerOptions.empty() ? "" : " ") + value(i);
         else if (!a.empty() && a[0] == '-') throw UsageError("unknown option '" + a + "'");

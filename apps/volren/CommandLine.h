@@ -43,6 +43,9 @@ struct RenderOptions
     std::string screenshot;                 ///< view: --screenshot FILE after --frames N, then exit
     std::string statsFile;                  ///< --stats FILE.json
     std::string readerOptions;              ///< -O OPTION (repeatable): the volume reader's options
+    /// --scale-bar / --no-scale-bar, --axes / --no-axes: the screen annotations (unset: off for
+    /// render, on for view).
+    std::optional<bool> scaleBar, axes;
 };
 
 /// Parses the arguments after `render`; throws UsageError naming the bad argument.

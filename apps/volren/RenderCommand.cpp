@@ -34,7 +34,8 @@ int renderCommand(const std::vector<std::string>& args, bool defaultRun)
     if (defaultRun) options.output = "volren.png";
     const std::string input = inputName(options);
 
-    osg::ref_ptr<osg::Node> scene = loadScene(options);
+    osg::ref_ptr<VolumeScene> scene = loadScene(options);
+    addAnnotations(*scene, options, false);
     OffscreenRenderer renderer(options.width, options.height, options.samples);
     renderer.setScene(scene.get());
     renderer.setBackground(osg::Vec3(options.background));

@@ -4,6 +4,7 @@
 #include <volume_renderer/SceneSettings.h>
 
 #include <volume_model/AssignTransferFunction.h>
+#include <volume_model/LengthUnit.h>
 #include <volume_model/DefaultScene.h>
 #include <volume_model/ReadScene.h>
 #include <volume_model/SceneInputs.h>
@@ -50,6 +51,24 @@ osg::ref_ptr<VolumeScene> loadScene(const RenderOptions& options)
         }
     }
     return root;
+}
+
+osg::ref_ptr<Annotations> addAnnotations(VolumeScene& scene, const RenderOptions& options, bool byDefault)
+{
+    const bool scaleBar = options.scaleBar.value_or(byDefault), axes = options.axes.value_or(byDefault);
+    if (!scaleBar && !axes) return nullptr;
+    osg::ref_ptr<Annotations> annotations = new Annotations;
+    annotations->setScaleBar(scaleBar);
+    annotations->setAxes(axes);
+    for (const VolumeNode* node : findVolumeNodes(scene))
+        if (node->getVolume()) {
+            annotations->setUnit(lengthUnitOf(*node->getVolume()));
+            break;
+        }
+    const osg::Vec3d& b = options.background;
+    if (0.2126 * b.x() + 0.7152 * b.y() + 0.0722 * b.z() > 0.5) annotations->setColour(osg::Vec4(0, 0, 0, 1));
+    scene.addChild(annotations.get());
+    return annotations;
 }
 
 CameraRequest cameraRequest(const RenderOptions& options)

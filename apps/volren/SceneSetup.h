@@ -1,6 +1,7 @@
 #pragma once
 #include "CommandLine.h"
 
+#include <volume_renderer/Annotations.h>
 #include <volume_renderer/CameraFraming.h>
 #include <volume_renderer/VolumeScene.h>
 
@@ -20,6 +21,10 @@ std::string inputName(const RenderOptions& options);
 /// are none, then applies --tf and --set (routed by volren::applySetting); throws
 /// std::runtime_error / UsageError naming the file or setting.
 osg::ref_ptr<VolumeScene> loadScene(const RenderOptions& options);
+/// Adds the screen annotations the options ask for (--scale-bar, --axes; unset: `byDefault`) to
+/// `scene`: the scale bar in the first volume's length unit, white (black over a light
+/// background). Returns them (null when neither is shown).
+osg::ref_ptr<Annotations> addAnnotations(VolumeScene& scene, const RenderOptions& options, bool byDefault);
 /// The camera the options ask for (--eye, --center, --up, --fov, --ortho).
 CameraRequest cameraRequest(const RenderOptions& options);
 /// Sets the camera's view and projection from the options, defaulting to a view from the

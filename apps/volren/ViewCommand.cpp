@@ -2,10 +2,12 @@
 #include "ImageWriter.h"
 #include "SceneSetup.h"
 
+#include <volume_gui/ChannelPanel.h>
 #include <volume_gui/ImGuiOverlay.h>
 #include <volume_gui/InteractionQuality.h>
 #include <volume_gui/LightDrag.h>
 #include <volume_gui/RenderSettingsPanel.h>
+#include <volume_gui/TimePlayer.h>
 #include <volume_gui/TransferFunctionEditor.h>
 #include <volume_renderer/ShaderFunctionRegistry.h>
 #include <volume_renderer/VolumeScene.h>
@@ -87,6 +89,7 @@ int viewCommand(const std::vector<std::string>& args)
         for (VolumeNode* n : findVolumeNodes(*root)) n->settings.lodByDistance = true;
     // Bricked volumes stream in: frames never wait for the loaders, detail arrives over frames.
     if (!isSet("streambricks")) root->pass.streamBricks = true;
+    addAnnotations(*root, options, true);  // the scale bar and the axes, unless --no-scale-bar, --no-axes
     if (options.samples > 1) osg::DisplaySettings::instance()->setNumMultiSamples(options.samples);  // an MSAA window
     osgViewer::Viewer viewer;
     viewer.setThreadingModel(osgViewer::ViewerBase::SingleThreaded);
@@ -97,18 +100,26 @@ int viewCommand(const std::vector<std::string>& args)
     const std::vector<VolumeNode*> nodes = findVolumeNodes(*root);
     VolumeNode* node = nodes.empty() ? nullptr : nodes.front();
     std::unique_ptr<TransferFunctionEditor> editor;
+    std::unique_ptr<ChannelPanel> channels;  // a multi-channel volume: its channels, one editor each
     std::unique_ptr<RenderSettingsPanel> panel;
+    TimePlayer player(*root);
     osg::ref_ptr<ImGuiOverlay> overlay;
     if (node && node->getTransferFunction()) {
-        editor = std::make_unique<TransferFunctionEditor>(const_cast<TransferFunction*>(node->getTransferFunction()),
-                                                          node->getVolume());
+        if (node->showsChannels())
+            channels = std::make_unique<ChannelPanel>(node);
+        else
+            editor = std::make_unique<TransferFunctionEditor>(const_cast<TransferFunction*>(node->getTransferFunction()),
+                                                              node->getVolume());
         std::map<std::string, std::vector<std::string>> choices;
         for (const char* slot : {"RayTraversal", "Reconstruction", "Gradient", "Illumination", "Shadowing", "Acceleration"})
             choices[slot] = root->policy().choosable(slot);  // default first
         panel = std::make_unique<RenderSettingsPanel>(node, choices);
-        overlay = new ImGuiOverlay([&editor, &panel, scene = root.get()] {
+        overlay = new ImGuiOverlay([&editor, &channels, &panel, &player, scene = root.get()] {
             ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
-            editor->draw();
+            if (channels) channels->draw();
+            else editor->draw();
+            ImGui::SetNextWindowPos(ImVec2(10, ImGui::GetIO().DisplaySize.y - 140), ImGuiCond_FirstUseEver);
+            player.draw();  // a time series: slider, play/pause
             ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x - 410, 10), ImGuiCond_FirstUseEver);
             panel->draw();
             ImGui::SetNextWindowPos(ImVec2(10, ImGui::GetIO().DisplaySize.y - 40), ImGuiCond_Always);

@@ -1,5 +1,5 @@
 // volren::VolumeNode: its (shareable) Volume and TransferFunction, its RenderSettings and, for
-// a multi-channel volume, how each channel is shown (Channels: visible and transfer function),
+// a multi-channel volume, how each channel is shown (Channels: visible, transfer function, opacity scale),
 // and the time point a time series shows (TimePoint, written when not 0).
 // Name, node mask, state set and callbacks come from the osg::Node wrapper.
 //
@@ -122,6 +122,8 @@ bool writeChannels(osgDB::OutputStream& os, const VolumeNode& node)
         writeBool(os, channel.visible);
         writeProperty(os, "TransferFunction");  // the node's where the channel names none
         writeObjectField(os, channel.transferFunction ? channel.transferFunction.get() : node.getTransferFunction());
+        writeProperty(os, "Opacity");
+        writeDouble(os, channel.opacity);
     }
     os << os.END_BRACKET << std::endl;
     return true;
@@ -138,8 +140,10 @@ bool readChannels(osgDB::InputStream& is, VolumeNode& node)
         const std::string what = field + " " + std::to_string(c);
         if (!readProperty(is, "Visible", what) || !readBool(is, channels[c].visible, what + " Visible") ||
             !readProperty(is, "TransferFunction", what) ||
-            !readObjectField(is, channels[c].transferFunction, what + " TransferFunction", "volren::TransferFunction"))
+            !readObjectField(is, channels[c].transferFunction, what + " TransferFunction", "volren::TransferFunction") ||
+            !readProperty(is, "Opacity", what) || !readDouble(is, channels[c].opacity, what + " Opacity"))
             return false;
+        if (channels[c].opacity < 0.0) return fail(is, what + " Opacity: " + std::to_string(channels[c].opacity) + " is negative"), false;
     }
     is >> is.END_BRACKET;
     if (is.getException()) return false;

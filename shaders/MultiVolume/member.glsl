@@ -7,6 +7,8 @@
 //                       out float worldPerT, inout float tNear, inout float tFar)
 // float volren_memberSample(vec3 pos, vec3 memberDir, float worldLength, out vec3 emitted)
 // float volren_memberSkip(vec3 memberOrigin, vec3 memberDir, float t, float tFar, out float tRecheck)
+// bool volren_memberValue(vec3 pos, out float value)
+// vec4 volren_memberClassify(float value)
 
 // The set's ray in this member's texture space (volren_setToMember: set box -> member texture
 // space), its world length per unit t in the member's local units, and [tNear, tFar] narrowed to
@@ -41,4 +43,20 @@ float volren_memberSample(vec3 pos, vec3 memberDir, float worldLength, out vec3 
 float volren_memberSkip(vec3 memberOrigin, vec3 memberDir, float t, float tFar, out float tRecheck)
 {
     return volren_skip(memberOrigin, memberDir, t, tFar, tRecheck);
+}
+
+// This member's reconstructed scalar at pos; false where it does not count (clipped or NaN).
+bool volren_memberValue(vec3 pos, out float value)
+{
+    value = 0.0;
+    if (volren_clipPosition(pos)) return false;
+    value = volren_fetchScalar(pos);
+    return !isnan(value);
+}
+
+// This member's classification of `value`, premultiplied (unlit, as the projections show it).
+vec4 volren_memberClassify(float value)
+{
+    vec4 c = volren_classify(value);
+    return vec4(c.rgb * c.a, c.a);
 }

@@ -208,6 +208,35 @@ TEST(VolrenCli, FloatOutputIsWrittenAsExrWithAlpha)
     EXPECT_EQ(img.at(0, 0, 3), 0.0f);
 }
 
+TEST(VolrenCli, ScaleBarAndAxesAreDrawnInTheirCornersOnlyWhenAsked)
+{
+    // The confocal stack's unit is the micron (ImageJ unit=micron): its bar's label says µm; the
+    // image away from the bottom corners is the one without annotations.
+    VOLREN_REQUIRE_SHARED_DATA();
+    const std::string dir = tempDirectory();
+    const std::string input = "'" + sharedData("microscopy/xyzc_16bit__dna_conf_wf.tif") + "' --size 160x160";
+    ASSERT_EQ(volren("render " + input + " -o '" + dir + "/plain.png'").exitCode, 0);
+    const CliRun run = volren("render " + input + " -o '" + dir + "/marked.png' --scale-bar --axes");
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    const Image plain = readImage(dir + "/plain.png"), marked = readImage(dir + "/marked.png");
+    ASSERT_EQ(marked.width, 160);
+    int changedLeft = 0, changedRight = 0;
+    for (int y = 0; y < 160; ++y)  // rows from the top
+        for (int x = 0; x < 160; ++x) {
+            bool same = true;
+            for (int c = 0; c < 3; ++c) same = same && marked.at(x, y, c) == plain.at(x, y, c);
+            if (y < 160 - 110) {
+                ASSERT_TRUE(same) << x << "," << y << " (from the top)";
+            } else {
+                changedLeft += !same && x < 110;
+                changedRight += !same && x >= 100;
+            }
+        }
+    EXPECT_GT(changedLeft, 100) << "the axis gizmo";
+    EXPECT_GT(changedRight, 40) << "the scale bar and its label";
+    for (const char* bad : {"--scale-bar=1", "--axis-gizmo"}) EXPECT_EQ(volren("render " + input + " -o x.png " + bad).exitCode, 2);
+}
+
 TEST(VolrenCli, SamplesDrawIntoAMultisampledFramebuffer)
 {
     // The instrument scene's rod at 4 samples per pixel: its edges blend with what lies behind,

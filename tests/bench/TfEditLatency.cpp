@@ -4,6 +4,8 @@
 // upload and the occupancy grid's rebuild (empty-space skipping); the frame itself is the rest.
 // Also the macrocell value-range grid's build, once per volume, on the CPU.
 // Usage: tf_edit_latency [WIDTHxHEIGHT] [ROUNDS] [--no-skipping]
+#include "Median.h"
+
 #include <volume_model/ReadVolume.h>
 #include <volume_renderer/MacrocellGrid.h>
 #include <volume_renderer/OffscreenRenderer.h>
@@ -18,15 +20,7 @@
 #include <string>
 #include <vector>
 
-namespace {
-
-double median(std::vector<double> v)
-{
-    std::sort(v.begin(), v.end());
-    return v.empty() ? 0.0 : v[v.size() / 2];
-}
-
-}  // namespace
+using volren::bench::median;
 
 int main(int argc, char** argv)
 {

@@ -4,6 +4,7 @@
 #include "GdcmProbe.h"
 #include "TestData.h"
 
+#include <volume_model/LengthUnit.h>
 #include <volume_model/LoadProgress.h>
 #include <volume_model/ReadVolume.h>
 
@@ -151,6 +152,7 @@ TEST(DicomReader, ReadsPancreasCtSubsetAsInTheManifest)
     EXPECT_NEAR(v->spacing().x(), 1.07421875, 1e-9);
     EXPECT_NEAR(v->spacing().y(), 1.07421875, 1e-9);
     EXPECT_NEAR(v->spacing().z(), 3.0, 1e-6);
+    EXPECT_EQ(lengthUnitOf(*v), "mm");
     EXPECT_EQ(v->rescaleSlope(), 1.0);
     EXPECT_EQ(v->rescaleIntercept(), -1000.0);
     EXPECT_EQ(v->sourceFile, dir);

@@ -3,6 +3,7 @@
 // here read back exactly, bad ones fail with the file name and the reason.
 #include "TestData.h"
 
+#include <volume_model/LengthUnit.h>
 #include <volume_model/ReadVolume.h>
 
 #include <osg/Matrixd>
@@ -33,6 +34,7 @@ struct Nifti2Builder
     double slope = 0.25, inter = -7.5;
     std::int64_t voxOffset = 544;
     int qformCode = 0, sformCode = 0;
+    int xyztUnits = 0;
     double quatern[3] = {0, 0, 0}, qoffset[3] = {0, 0, 0};
     double srow[3][4] = {};
     bool bigEndian = false;
@@ -63,6 +65,7 @@ struct Nifti2Builder
         for (int i = 0; i < 3; ++i) put<double>(h, 376 + 8 * i, qoffset[i]);
         for (int r = 0; r < 3; ++r)
             for (int c = 0; c < 4; ++c) put<double>(h, 400 + 32 * r + 8 * c, srow[r][c]);
+        put<int>(h, 500, xyztUnits);
         std::vector<char> body = voxels;
         const std::size_t width = std::size_t(bitpix / 8);
         if (bigEndian && width > 1)
@@ -120,6 +123,19 @@ TEST(Nifti2Reader, LittleAndBigEndianFilesReadBackExactly)
         const osg::Matrixd m = toWorldOf(*v, &source);
         EXPECT_EQ(source, "pixdim");
         EXPECT_NEAR((osg::Vec3d(2, 0, 1) * m - osg::Vec3d(0.6, 0, 1.1)).length(), 0.0, 1e-12);
+    }
+}
+
+TEST(Nifti2Reader, XyztUnitsGiveTheSpacingsUnit)
+{
+    // xyzt_units: bits 0-2 the spatial unit (1 m, 2 mm, 3 µm), bits 3-5 time (8 s, ignored).
+    const std::string dir = tempDirectory();
+    for (const auto& [code, unit] : std::vector<std::pair<int, std::string>>{
+             {0, ""}, {1, "m"}, {2 + 8, "mm"}, {3 + 16, "\xC2\xB5m"}, {4, ""}}) {
+        Nifti2Builder b = rampImage();
+        b.xyztUnits = code;
+        writeAll(dir + "/units.nii", b.build());
+        EXPECT_EQ(lengthUnitOf(*readVolumeFile(dir + "/units.nii")), unit) << "xyzt_units " << code;
     }
 }
 

@@ -2,6 +2,7 @@
 // order, value scaling, and bad files that must fail with the file name and the reason.
 #include "TestData.h"
 
+#include <volume_model/LengthUnit.h>
 #include <volume_model/ReadVolume.h>
 
 #include <osgDB/ReadFile>
@@ -98,6 +99,7 @@ TEST(NiftiReader, ReadsCtAngiographyWithScaleSlope)
     VOLREN_REQUIRE_SHARED_DATA();
     osg::ref_ptr<Volume> v = readVolumeFile(sharedData("ct/CT_AVM.nii.gz"));
     EXPECT_EQ(v->dims(), osg::Vec3i(256, 242, 154));
+    EXPECT_EQ(lengthUnitOf(*v), "mm") << "xyzt_units 10: mm and seconds";
     EXPECT_EQ(v->type(), VoxelType::UInt8);
     EXPECT_NEAR(v->spacing().x(), 0.7199, 1e-4);
     EXPECT_NEAR(v->spacing().y(), 0.7209, 1e-4);

@@ -4,6 +4,7 @@
 #include "TestData.h"
 
 #include <volume_model/ChannelDisplay.h>
+#include <volume_model/LengthUnit.h>
 #include <volume_model/LoadProgress.h>
 #include <volume_model/ReadVolume.h>
 
@@ -221,6 +222,7 @@ TEST(TiffReader, ReadsTwoChannelDnaHyperstackAsInTheManifest)
     EXPECT_NEAR(v->spacing().x(), 0.5119, 1e-4);  // 1 / 1.953591
     EXPECT_NEAR(v->spacing().y(), 0.5119, 1e-4);
     EXPECT_NEAR(v->spacing().z(), 0.4994, 1e-4);
+    EXPECT_EQ(lengthUnitOf(*v), "\xC2\xB5m") << "ImageJ unit=micron";
     EXPECT_EQ(sliceSum(*v, 0, 0, 0), 213017.0);     // page 0: confocal, z 0
     EXPECT_EQ(sliceSum(*v, 1, 0, 0), 16688374.0);   // page 1: widefield, z 0
     EXPECT_EQ(sliceSum(*v, 0, 0, 44), 652374.0);    // page 88: confocal, z 44
@@ -412,6 +414,7 @@ TEST(TiffReader, OmeTiffGivesLayoutFromDimensionOrderAndPhysicalSizes)
     EXPECT_EQ(v->channels(), 2);
     EXPECT_EQ(v->frames(), 2);
     EXPECT_EQ(v->spacing(), osg::Vec3d(0.2, 0.3, 1.5));
+    EXPECT_EQ(lengthUnitOf(*v), "\xC2\xB5m") << "OME's default PhysicalSizeXUnit";
     for (int c = 0; c < 2; ++c)
         for (int t = 0; t < 2; ++t)
             for (int z = 0; z < 3; ++z) EXPECT_EQ(at(*v, c, t, 1, 2, z), double(z + 3 * (t + 2 * c))) << c << z << t;

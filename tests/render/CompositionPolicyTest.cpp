@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <regex>
 #include <set>
@@ -109,18 +110,24 @@ TEST(CompositionPolicy, ClipShapesGoToTheImplementationOfTheirKind)
 TEST(CompositionPolicy, OverlappingEmissionAbsorptionVolumesShareOneRay)
 {
     const CompositionPolicy policy;
-    Composition dvr, back, mip;
+    Composition dvr, back, mip, average;
     back.choice["RayTraversal"] = "dvr_back_to_front";
     mip.choice["RayTraversal"] = "mip";
+    average.choice["RayTraversal"] = "average";
     EXPECT_TRUE(policy.canShareRay(dvr));
     EXPECT_TRUE(policy.canShareRay(back));
-    EXPECT_FALSE(policy.canShareRay(mip));
+    EXPECT_TRUE(policy.canShareRay(mip)) << "with other MIP volumes: their maxima add";
+    EXPECT_FALSE(policy.canShareRay(average));
+    EXPECT_EQ(policy.memberKind(dvr), "emission_absorption");
+    EXPECT_EQ(policy.memberKind(mip), "maximum");
     const std::vector<osg::BoundingBoxd> bounds = {{0, 0, 0, 2, 2, 2}, {5, 5, 5, 6, 6, 6}, {1, 1, 1, 3, 3, 3}, {2.5, 2.5, 2.5, 5.5, 5.5, 5.5}};
     const auto groups = policy.rayGroups(bounds, {&dvr, &back, &dvr, &dvr}, false);
     ASSERT_EQ(groups.size(), 1u) << "overlap is transitive: 0-2, 2-3, 3-1";
     EXPECT_EQ(groups[0].members, (std::vector<std::size_t>{0, 1, 2, 3}));
     EXPECT_TRUE(groups[0].shared);
-    EXPECT_FALSE(policy.rayGroups(bounds, {&dvr, &back, &mip, &dvr}, false)[0].shared);
+    EXPECT_FALSE(policy.rayGroups(bounds, {&dvr, &back, &mip, &dvr}, false)[0].shared) << "different kinds";
+    EXPECT_FALSE(policy.rayGroups(bounds, {&dvr, &back, &average, &dvr}, false)[0].shared);
+    EXPECT_TRUE(policy.rayGroups(bounds, {&mip, &mip, &mip, &mip}, false)[0].shared);
     EXPECT_FALSE(policy.rayGroups(bounds, {&dvr, &back, &dvr, &dvr}, true)[0].shared) << "forced compositions";
     const auto apart = policy.rayGroups({{0, 0, 0, 1, 1, 1}, {1, 0, 0, 2, 1, 1}}, {&dvr, &dvr}, false);
     EXPECT_EQ(apart.size(), 2u) << "touching boxes do not overlap";
@@ -148,6 +155,41 @@ TEST(CompositionPolicy, ASetOwnsTheRayAndTheDepthClip)
         EXPECT_EQ(m.functionFor("RayTraversal"), "dvr_front_to_back");
     }
     EXPECT_EQ(set.composition.members[0].lightCount, 1u);
+}
+
+TEST(CompositionPolicy, ASetTraversalNamedForAVolumeDecidesHowItsSetCombines)
+{
+    // `traversal=additive` draws the volume alone as dvr and its set adds the members' images;
+    // `traversal=mip` members get the set that adds maxima (their Acceleration dropped: it takes
+    // no leaps); unnamed emission-absorption members combine their media.
+    const CompositionPolicy policy;
+    EXPECT_EQ(policy.resolve("RayTraversal", "additive"), "additive");
+    EXPECT_EQ(policy.resolve("RayTraversal", "composite"), "sum_of_media");
+    EXPECT_EQ(policy.resolve("RayTraversal", "mip_additive"), "mip_additive");
+    const std::vector<std::string> names = policy.choosable("RayTraversal");
+    EXPECT_EQ(names.front(), "dvr_front_to_back");
+    EXPECT_NE(std::find(names.begin(), names.end(), "additive"), names.end());
+    auto chosen = [&](const std::string& traversal) {
+        RenderSettings s;
+        if (!traversal.empty()) s.functions["RayTraversal"] = traversal;
+        return policy.choose(s, offerWith(0), {});
+    };
+    const ChosenComposition additive = chosen("additive");
+    EXPECT_EQ(additive.composition.functionFor("RayTraversal"), "dvr_front_to_back");
+    EXPECT_EQ(additive.setTraversal, "additive");
+    EXPECT_EQ(additive.composition.key(), chosen("").composition.key()) << "alone it is plain dvr";
+    std::vector<ChosenComposition> images = {additive, chosen("")};
+    EXPECT_EQ(policy.setComposition(images).composition.functionFor("RayTraversal"), "additive");
+    std::vector<ChosenComposition> media = {chosen(""), additive};
+    EXPECT_EQ(policy.setComposition(media).composition.functionFor("RayTraversal"), "sum_of_media") << "the first's";
+    EXPECT_EQ(policy.setComposition(media).composition.members[0].functionFor("Acceleration"), "occupancy");
+    for (const char* name : {"mip", "mip_additive"}) {
+        std::vector<ChosenComposition> maxima = {chosen(name), chosen("mip")};
+        EXPECT_EQ(maxima[0].composition.functionFor("RayTraversal"), "mip");
+        const ChosenComposition set = policy.setComposition(maxima);
+        EXPECT_EQ(set.composition.functionFor("RayTraversal"), "mip_additive") << name;
+        for (const Composition& m : set.composition.members) EXPECT_EQ(m.functionFor("Acceleration"), "null");
+    }
 }
 
 TEST(CompositionPolicy, EmptySpaceSkippingIsTheDefaultWhereverItCanWork)
@@ -237,7 +279,7 @@ TEST(CompositionPolicy, ResolvesNamesAliasesAndOnOff)
     EXPECT_EQ(policy.resolve("Gradient", "on"), "central");
     EXPECT_EQ(policy.resolve("Shading", "off"), "null");
     EXPECT_EQ(policy.resolve("ClipRay", "on"), "") << "no implementation is what 'on' means there";
-    EXPECT_EQ(policy.resolve("RayTraversal", "sum_of_media"), "") << "set-only implementations are not choosable";
+    EXPECT_EQ(policy.resolve("RayTraversal", "sum_of_media"), "sum_of_media") << "a set traversal with a member traversal";
     EXPECT_EQ(policy.resolve("Jitter", "sparkle"), "");
     EXPECT_EQ(policy.choosable("Jitter").front(), "hash") << "default first";
 }

@@ -182,7 +182,7 @@ TestScene makeScene(const std::string& dir)
     c->setVolume(s.memoryVolume.get());
     c->setTransferFunction(windowed.get());
     // Its two channels: the first through a TF of its own, the second hidden, through the node's.
-    c->channels = {{true, colourWindowTransferFunction({0, 1, 0}, 2.5, 40.0, 0.25)}, {false, nullptr}};
+    c->channels = {{true, colourWindowTransferFunction({0, 1, 0}, 2.5, 40.0, 0.25), 2.5}, {false, nullptr}};
     c->setTimePoint(2);  // the last of its three
 
     osg::ref_ptr<osg::MatrixTransform> placed = new osg::MatrixTransform(osg::Matrix::translate(1, 2, 3));
@@ -255,6 +255,7 @@ void expectSameNode(const osg::Node& a, const osg::Node& b)
         ASSERT_EQ(va->channels.size(), vb->channels.size()) << a.getName();
         for (std::size_t c = 0; c < va->channels.size(); ++c) {
             EXPECT_EQ(va->channels[c].visible, vb->channels[c].visible) << a.getName() << " channel " << c;
+            EXPECT_EQ(va->channels[c].opacity, vb->channels[c].opacity) << a.getName() << " channel " << c;
             const TransferFunction* ta = va->channels[c].transferFunction ? va->channels[c].transferFunction.get()
                                                                           : va->getTransferFunction();
             ASSERT_TRUE(vb->channels[c].transferFunction) << "written as the node's where it names none";
@@ -518,6 +519,8 @@ TEST_F(SceneFileBad, WrongValueTypesFailNamingTheField)
         {"Dims 3 4 5", "Dims 3 4 5.5", "Dims: expected an integer, got '5.5'"},
         {"Visible TRUE", "Visible maybe", "volren::VolumeNode Channels 0 Visible: expected TRUE or FALSE, got 'maybe'"},
         {"Channels 2 {", "Channels -2 {", "volren::VolumeNode Channels: -2 is not in [0, 4096]"},
+        {"Opacity 2.5", "Opacity -2.5", "volren::VolumeNode Channels 0 Opacity: -2.5"},
+        {"Opacity 2.5", "Opacity lots", "volren::VolumeNode Channels 0 Opacity: expected a number, got 'lots'"},
         {"TimePoint 2", "TimePoint -1", "volren::VolumeNode TimePoint: -1 is not in [0, 1000000000]"},
     };
     for (const auto& [from, to, expected] : cases) {

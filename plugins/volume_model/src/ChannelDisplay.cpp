@@ -33,6 +33,15 @@ osg::ref_ptr<Volume> channelOf(const Volume& volume, int c, int t)
     return one;
 }
 
+osg::ref_ptr<TransferFunction> scaledOpacity(const TransferFunction& tf, double scale)
+{
+    osg::ref_ptr<TransferFunction> out = new TransferFunction;
+    out->assign(tf);
+    for (const auto& [value, rgba] : tf.points())
+        out->setPoint(value, osg::Vec4(rgba.r(), rgba.g(), rgba.b(), float(std::clamp(double(rgba.a()) * scale, 0.0, 1.0))));
+    return out;
+}
+
 osg::Vec3 channelColour(int c)
 {
     static const osg::Vec3 palette[] = {{0, 1, 0}, {1, 0, 1}, {0, 1, 1}, {1, 1, 0}, {1, 0, 0}, {0, 0, 1}};

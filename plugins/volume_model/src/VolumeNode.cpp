@@ -77,6 +77,15 @@ VolumeNode* VolumeNode::channelNode(int c) const
     TransferFunction* tf = std::size_t(c) < channels.size() && channels[std::size_t(c)].transferFunction
                                ? channels[std::size_t(c)].transferFunction.get()
                                : _transferFunction.get();
+    if (const double scale = std::size_t(c) < channels.size() ? channels[std::size_t(c)].opacity : 1.0; tf && scale != 1.0) {
+        if (block.from.get() != tf || block.fromModified != tf->modifiedCount() || block.scale != scale || !block.scaled) {
+            block.scaled = scaledOpacity(*tf, scale);
+            block.from = tf;
+            block.fromModified = tf->modifiedCount();
+            block.scale = scale;
+        }
+        tf = block.scaled.get();
+    }
     if (node.getTransferFunction() != tf) node.setTransferFunction(tf);
     if (!(node.settings == settings)) node.settings = settings;  // written only when changed (others may read it)
     if (node.getNodeMask() != getNodeMask()) node.setNodeMask(getNodeMask());

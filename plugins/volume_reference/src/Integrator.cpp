@@ -66,7 +66,7 @@ Medium mediumOf(const ReferenceScene& scene, const ReferenceScene::Placed& place
 }  // namespace
 
 Integrator::Integrator(const ReferenceScene& scene, const ReferenceCamera& camera, const ReferenceOptions& options)
-    : _options(options)
+    : _options(options), _blending(scene.blending)
 {
     _unit = std::numeric_limits<double>::infinity();
     const std::size_t lightCount = options.lighting ? std::min<std::size_t>(scene.lights.size(), 8) : 0;
@@ -93,11 +93,11 @@ glm::dvec4 Integrator::integrate(const Ray& ray, double end, bool& converged, bo
     if (!(u1 > u0)) return glm::dvec4(0.0);
     double step = _options.firstStep * _unit;
     ShadowTally discarded;
-    glm::dvec4 coarse = march(ray, u0, u1, step, discarded);
+    glm::dvec4 coarse = sample(ray, u0, u1, step, discarded);
     for (;;) {
         step *= 0.5;
         ShadowTally tally;  // of the march that may be kept
-        const glm::dvec4 fine = march(ray, u0, u1, step, tally);
+        const glm::dvec4 fine = sample(ray, u0, u1, step, tally);
         double change = 0.0;
         for (int c = 0; c < 4; ++c) change = std::max(change, std::abs(fine[c] - coarse[c]));
         finest = std::min({finest, step, tally.finest});
@@ -140,7 +140,43 @@ bool Integrator::boxSpan(const Medium& m, const Ray& ray, double& a, double& b)
     return b > a;
 }
 
-glm::dvec4 Integrator::march(const Ray& ray, double u0, double u1, double step, ShadowTally& tally) const
+glm::dvec4 Integrator::sample(const Ray& ray, double u0, double u1, double step, ShadowTally& tally) const
+{
+    if (_blending == ReferenceScene::Blending::Media) return march(ray, u0, u1, step, tally);
+    glm::dvec3 colour(0.0);
+    double clear = 1.0;  // prod(1 - alpha)
+    for (std::size_t k = 0; k < _media.size(); ++k) {
+        const glm::dvec4 image = _blending == ReferenceScene::Blending::Images ? march(ray, u0, u1, step, tally, int(k))
+                                                                                : maximum(ray, u0, u1, step, k);
+        colour += glm::dvec3(image);
+        clear *= 1.0 - image.a;
+    }
+    return glm::dvec4(glm::min(colour, glm::dvec3(1.0)), 1.0 - clear);
+}
+
+glm::dvec4 Integrator::maximum(const Ray& ray, double u0, double u1, double step, std::size_t index) const
+{
+    const Medium& m = _media[index];
+    const double start = u0 * ray.length, end = u1 * ray.length;
+    const auto count = std::size_t(std::ceil((end - start) / step));
+    const double h = (end - start) / double(count);
+    bool found = false;
+    double best = 0.0;
+    for (std::size_t k = 0; k < count; ++k) {
+        const glm::dvec3 p = ray.origin + ray.direction * ((start + (double(k) + 0.5) * h) / ray.length);
+        const glm::dvec3 tc = toGlm(osg::Vec3d(p.x, p.y, p.z) * m.worldToLocal) / m.size + 0.5;
+        if (tc.x < 0 || tc.y < 0 || tc.z < 0 || tc.x > 1 || tc.y > 1 || tc.z > 1 || !kept(p)) continue;
+        const double v = m.value(tc);
+        if (std::isnan(v) || (found && !(v > best))) continue;
+        best = v;
+        found = true;
+    }
+    if (!found) return glm::dvec4(0.0);
+    const osg::Vec4 c = m.tf->evaluate(std::clamp(best, m.domainMin, m.domainMax));
+    return glm::dvec4(c.r() * c.a(), c.g() * c.a(), c.b() * c.a(), c.a());
+}
+
+glm::dvec4 Integrator::march(const Ray& ray, double u0, double u1, double step, ShadowTally& tally, int only) const
 {
     const double start = u0 * ray.length, end = u1 * ray.length;
     const auto count = std::size_t(std::ceil((end - start) / step));
@@ -155,7 +191,9 @@ glm::dvec4 Integrator::march(const Ray& ray, double u0, double u1, double step, 
         bool opaque = false;
         glm::dvec3 opaqueColour(0.0);
         if (!kept(p)) continue;
-        for (const Medium& m : _media) {
+        for (std::size_t index = 0; index < _media.size(); ++index) {
+            if (only >= 0 && index != std::size_t(only)) continue;
+            const Medium& m = _media[index];
             const osg::Vec3d localPoint = osg::Vec3d(p.x, p.y, p.z) * m.worldToLocal;
             const glm::dvec3 local = toGlm(localPoint);
             const glm::dvec3 tc = local / m.size + 0.5;

@@ -32,13 +32,19 @@ public:
 private:
     /// Where the ray is inside the box of `m`, as fractions [a, b] of the ray; false if nowhere.
     static bool boxSpan(const Medium& m, const Ray& ray, double& a, double& b);
-    /// Front-to-back over [u0, u1] of the ray with `step` world units, sampled at step midpoints;
-    /// its shadow rays add to `tally`.
-    glm::dvec4 march(const Ray& ray, double u0, double u1, double step, ShadowTally& tally) const;
+    /// The ray over [u0, u1] with `step` world units as the scene's blending combines the media.
+    glm::dvec4 sample(const Ray& ray, double u0, double u1, double step, ShadowTally& tally) const;
+    /// Front-to-back over [u0, u1] of the ray with `step` world units, sampled at step midpoints,
+    /// through every medium (only < 0) or medium `only` alone; its shadow rays add to `tally`.
+    glm::dvec4 march(const Ray& ray, double u0, double u1, double step, ShadowTally& tally, int only = -1) const;
+    /// Medium `index`'s classified maximum over [u0, u1] of the ray (step midpoints; clipped and
+    /// NaN points ignored), premultiplied; 0 where no point counts.
+    glm::dvec4 maximum(const Ray& ray, double u0, double u1, double step, std::size_t index) const;
     /// Whether every clip shape keeps world point `p`.
     bool kept(const glm::dvec3& p) const;
 
     ReferenceOptions _options;
+    ReferenceScene::Blending _blending = ReferenceScene::Blending::Media;
     std::vector<Medium> _media;
     std::vector<Clip> _clips;  ///< from world coordinates
     double _unit = 1.0;

@@ -1,5 +1,6 @@
 #include "DicomSeriesReader.h"
 
+#include <volume_model/LengthUnit.h>
 #include <volume_model/LoadProgress.h>
 
 #include <osg/Matrixd>
@@ -245,6 +246,7 @@ osg::ref_ptr<Volume> readSeries(const SliceOrder& order, const std::string& name
     }
 
     volume->setSpacing(spacing);
+    volume->setUserValue(spacingUnitKey, std::string("mm"));  // DICOM's Pixel Spacing and positions are in mm
     volume->setRescale(slope0, intercept0);
     volume->sourceFile = name;
     volume->setName(name);

@@ -47,6 +47,7 @@ void parseNifti1(const RawHeader& r, NiftiHeader& h, const std::string& name)
     for (int i = 0; i < 3; ++i) h.qoffset[i] = r.get<float>(268 + 4 * i);
     for (int row = 0; row < 3; ++row)
         for (int c = 0; c < 4; ++c) h.srow[row][c] = r.get<float>(280 + 16 * row + 4 * c);
+    h.xyztUnits = r.get<std::uint8_t>(123);
 }
 
 void parseNifti2(const RawHeader& r, NiftiHeader& h, const std::string& name)
@@ -70,6 +71,7 @@ void parseNifti2(const RawHeader& r, NiftiHeader& h, const std::string& name)
     for (int i = 0; i < 3; ++i) h.qoffset[i] = r.get<double>(376 + 8 * i);
     for (int row = 0; row < 3; ++row)
         for (int c = 0; c < 4; ++c) h.srow[row][c] = r.get<double>(400 + 32 * row + 8 * c);
+    h.xyztUnits = r.get<std::int32_t>(500);
 }
 
 }  // namespace
@@ -107,6 +109,16 @@ NiftiHeader readNiftiHeader(const ByteSource& source, const std::string& name)
             throw std::runtime_error(name + ": dim[" + std::to_string(i) + "] = " + std::to_string(h.dim[i]) +
                                      " is not positive");
     return h;
+}
+
+std::string spatialUnit(const NiftiHeader& header)
+{
+    switch (header.xyztUnits & 0x07) {
+    case 1: return "m";
+    case 2: return "mm";
+    case 3: return "\xC2\xB5m";
+    default: return {};
+    }
 }
 
 }  // namespace volren::nifti

@@ -22,7 +22,11 @@ struct NiftiHeader
     double quatern[3] = {};          ///< quatern_b, c, d
     double qoffset[3] = {};          ///< qoffset_x, y, z
     double srow[3][4] = {};          ///< sform rows x, y, z
+    int xyztUnits = 0;               ///< xyzt_units (bits 0-2 the spatial unit: 1 m, 2 mm, 3 µm)
 };
+
+/// The spatial unit `header` states ("m", "mm", "µm"), or "" when it states none.
+std::string spatialUnit(const NiftiHeader& header);
 
 /// Reads and checks the header from `source` (magic, version, rank 1..7, positive dims).
 /// Throws std::runtime_error("name: reason").

@@ -2,6 +2,8 @@
 #include "NiftiHeader.h"
 #include "NiftiOrientation.h"
 
+#include <volume_model/LengthUnit.h>
+
 #include <osg/Notify>
 #include <osg/ValueObject>
 
@@ -155,6 +157,7 @@ osg::ref_ptr<Volume> readNifti(const ByteSource& source, const std::string& name
     osg::ref_ptr<Volume> volume = new Volume;
     volume->assign(stored, dims, std::move(bytes));
     volume->setSpacing(spacing);
+    if (const std::string unit = spatialUnit(h); !unit.empty()) volume->setUserValue(spacingUnitKey, unit);
     volume->setRescale(slope, intercept);
     volume->sourceFile = name;
     volume->setName(name);

@@ -66,6 +66,7 @@ OmeMetadata parseOmeDescription(const std::string& description, const std::strin
     meta.physicalX = lengthAttribute(element, "PhysicalSizeX", name);
     meta.physicalY = lengthAttribute(element, "PhysicalSizeY", name);
     meta.physicalZ = lengthAttribute(element, "PhysicalSizeZ", name);
+    if (meta.physicalX) meta.physicalUnit = attribute(element, "PhysicalSizeXUnit").value_or("\xC2\xB5m");
     // The <Channel> elements after this <Pixels> (up to the next image's).
     const std::string after = match.suffix().str();
     const std::regex channel("<([A-Za-z_][\\w.-]*:)?(Channel|Image)[\\s>][^>]*>");

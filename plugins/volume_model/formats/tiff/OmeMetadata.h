@@ -15,6 +15,7 @@ struct OmeMetadata
     std::size_t sizeX = 0, sizeY = 0, sizeZ = 1, sizeC = 1, sizeT = 1;  ///< OME sizes
     std::string order = "ZCT";                                          ///< DimensionOrder without "XY"
     std::optional<double> physicalX, physicalY, physicalZ;               ///< voxel size, when given
+    std::string physicalUnit;  ///< PhysicalSizeXUnit (OME's default µm where PhysicalSizeX is given)
     std::size_t images = 1;                                              ///< <Image> elements in the file
     /// The first image's <Channel> elements in order: Name and Color (a signed 32-bit RGBA
     /// integer) as display hints; an unreadable Color gives none.

@@ -9,9 +9,11 @@
 #include "TiffPage.h"
 
 #include <algorithm>
+#include <volume_model/LengthUnit.h>
 #include <volume_model/LoadProgress.h>
 
 #include <osg/Notify>
+#include <osg/ValueObject>
 
 #include <cmath>
 #include <cstring>
@@ -127,6 +129,7 @@ osg::ref_ptr<Volume> readTiffStack(const std::vector<std::string>& files, const 
     StackLayout layout;
     layout.slices = pages.size();
     std::optional<double> zSpacing;
+    std::string unit;  // of the spacing, as the file names it
     std::vector<ChannelHint> displayHints;
     std::string metadata = files.size() > 1 ? "numbered slices" : "plain TIFF";
     if (files.size() == 1 && isOmeDescription(first.description)) {
@@ -139,12 +142,14 @@ osg::ref_ptr<Volume> readTiffStack(const std::vector<std::string>& files, const 
         if (ome.physicalX) first.xSpacing = ome.physicalX;
         if (ome.physicalY) first.ySpacing = ome.physicalY;
         zSpacing = ome.physicalZ;
+        unit = ome.physicalUnit;
         metadata = "OME-XML, DimensionOrder XY" + ome.order;
         if (spp == 1 && ome.channels.size() == layout.channels) displayHints = ome.channels;
     } else if (isImageJDescription(first.description)) {
         const ImageJMetadata ij = parseImageJDescription(first.description, name);
         if (files.size() == 1) layout = imageJLayout(ij, pages.size(), name);
         zSpacing = ij.spacing;
+        unit = ij.unit;
         metadata = "ImageJ" + std::string(ij.unit.empty() ? "" : ", unit " + ij.unit);
         if (!first.imageJData.empty())
             displayHints = parseImageJDisplay(first.imageJCounts, first.imageJData, layout.channels * spp, name);
@@ -192,6 +197,7 @@ osg::ref_ptr<Volume> readTiffStack(const std::vector<std::string>& files, const 
     volume->sourceFile = name;
     volume->setName(name);
     volume->channelHints = std::move(displayHints);
+    if (!spacingOverride && !lengthUnitSymbol(unit).empty()) volume->setUserValue(spacingUnitKey, unit);
     if (format.widenToFloat) OSG_NOTICE << name << ": 32-bit integer samples stored as float32" << std::endl;
     OSG_INFO << name << ": " << metadata << ", " << dims.x() << "x" << dims.y() << "x" << dims.z() << " "
              << voxelTypeName(format.type) << ", " << channels << " channel(s), " << layout.frames << " frame(s)" << std::endl;

@@ -14,6 +14,9 @@ struct ChannelDisplay
 {
     bool visible = true;                              ///< drawn at all
     osg::ref_ptr<TransferFunction> transferFunction;  ///< its classification (null: the node's)
+    /// Scales the opacity of every control point of its transfer function (each clamped to 1):
+    /// how strongly the channel shows against the others (in MIP, how bright it is).
+    double opacity = 1.0;
 };
 
 /// Channel `c` at time point `t` of `volume` as a volume of its own (a copy of that block, with
@@ -21,6 +24,9 @@ struct ChannelDisplay
 /// file when the block does not exist, std::runtime_error for a volume opened lazily with more
 /// blocks (its source holds one).
 osg::ref_ptr<Volume> channelOf(const Volume& volume, int c, int t = 0);
+
+/// A copy of `tf` with every control point's opacity multiplied by `scale` (clamped to [0, 1]).
+osg::ref_ptr<TransferFunction> scaledOpacity(const TransferFunction& tf, double scale);
 
 /// The default fluorescence colour of channel `c`: green, magenta, cyan, yellow, red, blue, then
 /// the same again.

@@ -59,7 +59,8 @@ public:
     bool drawsBlocks() const;
     /// The node that draws channel `c` at shownTimePoint() when drawsBlocks(): that block of the
     /// volume (copied once per change of the volume or the time point: only the shown blocks
-    /// reach the GPU), the channel's transfer function (the node's where it names none), this
+    /// reach the GPU), the channel's transfer function (the node's where it names none; a copy
+    /// with its opacity scaled, scaledOpacity(), where the channel's opacity is not 1), this
     /// node's settings and mask, named "<name> [channel c]". The same object for the same node
     /// and channel, so that a renderer keeps its programs.
     VolumeNode* channelNode(int c) const;
@@ -89,6 +90,11 @@ private:
         osg::ref_ptr<const Volume> volume;  ///< held: a new volume never takes its address
         unsigned int modified = 0;
         int timePoint = -1;
+        /// The opacity-scaled copy of a transfer function (`from` at its `fromModified`, times `scale`).
+        osg::ref_ptr<TransferFunction> scaled;
+        osg::ref_ptr<const TransferFunction> from;
+        unsigned int fromModified = 0;
+        double scale = 1.0;
     };
     mutable std::vector<BlockNode> _blockNodes;  ///< per channel
     mutable std::size_t _blockCopies = 0;

@@ -44,6 +44,13 @@ struct ReferenceScene
         /// sets it from the traits of the renderer's Shadowing choice (shadowsGeometry).
         bool shadowsGeometry = false;
     };
+    /// How the volumes combine along a ray (the renderer's multi-volume set traversal: its
+    /// ImplementationTraits::combines): their media add (the emission-absorption integral of the
+    /// summed medium: optical depths add, emissions mix), their own emission-absorption images
+    /// add, or their classified maxima (MIP, unlit, premultiplied) add. Added colours are clamped
+    /// to 1; the coverage of added images is 1 - prod(1 - alpha).
+    enum class Blending { Media, Images, Maxima };
+    Blending blending = Blending::Media;
     /// VolumeNodes with a volume and a transfer function (a multi-channel node as the nodes of
     /// its visible channels, VolumeNode::drawnNodes, as the renderer draws it)
     std::vector<Placed> volumes;

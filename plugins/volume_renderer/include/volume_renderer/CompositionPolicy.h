@@ -35,6 +35,10 @@ struct ChosenComposition
 {
     Composition composition;
     std::map<std::string, std::vector<ClipInfo>> clips;
+    /// The multi-volume set traversal the volume's settings name (`traversal=additive`): used
+    /// when it shares a ray with others (its own composition has that traversal's
+    /// memberTraversal); empty: the policy's default for its kind.
+    std::string setTraversal = {};
 };
 
 /// Volumes that the pass draws with one program (`shared`: a multi-volume set marching one
@@ -96,18 +100,25 @@ public:
     bool isValid(const SlotFunctions& chosen, unsigned int lightCount) const;
 
     /// Whether a volume drawn with `composition` may share a ray with overlapping volumes.
-    bool canShareRay(const Composition& composition) const;
+    bool canShareRay(const Composition& composition) const { return !memberKind(composition).empty(); }
+    /// The kind of set member a volume drawn with `composition` is (its traversal's sharesRayAs),
+    /// or "" when it cannot share a ray.
+    std::string memberKind(const Composition& composition) const;
     /// Groups of volumes whose boxes' bounds (in one frame) overlap, transitively, each in the
-    /// given order; a group is shared when it has several members, all may share a ray and the
-    /// compositions are not `forced`.
+    /// given order; a group is shared when it has several members, all may share a ray as the
+    /// same kind of member and the compositions are not `forced`.
     std::vector<RayGroup> rayGroups(const std::vector<osg::BoundingBoxd>& bounds,
                                     const std::vector<const Composition*>& compositions, bool forced) const;
-    /// The composition of a multi-volume set program over `members` (each member's own): the
-    /// set owns the per-set slots (SlotInfo::perSet) and the opaque geometry's depth clip, so
-    /// those leave the members (their compositions and clips are updated in place).
+    /// The composition of a multi-volume set program over `members` (each member's own, all of
+    /// one memberKind): the set owns the per-set slots (SlotInfo::perSet) and the opaque
+    /// geometry's depth clip, so those leave the members (their compositions and clips are
+    /// updated in place). Its traversal is the first member's setTraversal where it marches
+    /// members of that kind, else the one that combines their media, else the first that marches
+    /// them; members of a traversal that takes no leaps lose their Acceleration.
     ChosenComposition setComposition(std::vector<ChosenComposition>& members) const;
 
-    /// Implementations of `slot` a composition may choose (not the multi-volume ones), default first.
+    /// Implementations of `slot` a user may name, default first: those a single volume's
+    /// composition may choose, and the multi-volume traversals with a memberTraversal.
     std::vector<std::string> choosable(const std::string& slot) const;
     /// The implementation of `slot` a user's `value` names (its name or an alias; off, none,
     /// false, 0 = null; on, true, 1 = the needed one), or "" when none.
@@ -117,6 +128,8 @@ public:
 
 private:
     Composition bare(const std::string& setup) const;
+    /// The multi-volume traversal setComposition() gives `members` (null: none marches their kind).
+    const ShaderFunction* setTraversal(const std::vector<ChosenComposition>& members) const;
     std::string implementationForKind(const std::string& slot, const std::string& kind) const;
     void chooseLighting(ChosenComposition& out, const RenderSettings& settings, const SceneOffer& offer,
                         const PassSettings& pass) const;

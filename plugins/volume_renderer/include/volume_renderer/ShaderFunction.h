@@ -46,9 +46,20 @@ struct ImplementationTraits
     std::optional<SlotList> calls = {};
     /// Slots among `calls` that must be real (not null) whenever this implementation is chosen.
     SlotList required = {};
-    /// RayTraversal: composites emission and absorption, so overlapping volumes drawn with it may
-    /// share one ray (a multi-volume set; media add).
-    bool emissionAbsorption = false;
+    /// RayTraversal: what kind of member of a multi-volume set a volume drawn with it is, so that
+    /// overlapping volumes drawn alike share one ray: "emission_absorption" (their media add or
+    /// their images add) or "maximum" (each member's maximum, classified; the maxima add).
+    /// Empty: it never shares a ray (each volume is drawn box by box). A multi-volume set's
+    /// traversal: the kind of members it marches.
+    std::string sharesRayAs = {};
+    /// A multi-volume set's RayTraversal that users may name for a volume: the traversal the
+    /// volume is drawn with alone and as a member. Empty: only the policy picks it.
+    std::string memberTraversal = {};
+    /// A multi-volume set's RayTraversal: how its members combine, as the reference renderer
+    /// integrates them (ReferenceScene::Blending): "media" (optical depths add, emissions mix),
+    /// "images" (each member's own emission-absorption image, added: no member occludes another),
+    /// "maxima" (each member's classified maximum, added).
+    std::string combines = {};
     /// RayTraversal: reports an opaque surface hit and writes its depth (isosurface).
     bool writesDepth = false;
     /// Shading: whether and how it uses the scene's lights.

@@ -93,7 +93,12 @@ ChosenComposition CompositionPolicy::choose(const RenderSettings& settings, cons
     const Wishes wish{settings, pass};
     ChosenComposition out;
     const std::string setup = wish.chosen("RaySetup", defaultImplementation("RaySetup"));
-    const std::string traversal = wish.chosen("RayTraversal", defaultImplementation("RayTraversal"));
+    std::string traversal = wish.chosen("RayTraversal", defaultImplementation("RayTraversal"));
+    if (const ShaderFunction* f = _registry.find("RayTraversal", traversal);
+        f && f->traits.multiVolume && !f->traits.memberTraversal.empty()) {  // how it blends with others
+        out.setTraversal = traversal;
+        traversal = f->traits.memberTraversal;
+    }
     if (setup == none || traversal == none) {  // nothing is marched, so nothing else can run
         out.composition = bare(setup);
         return out;
@@ -245,6 +250,9 @@ std::map<std::string, std::vector<ClipInfo>> CompositionPolicy::assignClips(cons
 std::vector<std::string> CompositionPolicy::choosable(const std::string& slot) const
 {
     std::vector<std::string> names = _registry.names(slot);
+    for (const std::string& name : _registry.allNames(slot))
+        if (const ShaderFunction* f = _registry.find(slot, name); f->traits.multiVolume && !f->traits.memberTraversal.empty())
+            names.push_back(name);
     const std::string first = defaultImplementation(slot);
     if (auto it = std::find(names.begin(), names.end(), first); it != names.end()) std::rotate(names.begin(), it, it + 1);
     return names;
@@ -258,7 +266,7 @@ std::string CompositionPolicy::resolve(const std::string& slot, const std::strin
         const std::string needed = neededImplementation(slot);
         return needed == none ? std::string() : needed;
     }
-    for (const std::string& name : _registry.names(slot)) {
+    for (const std::string& name : choosable(slot)) {
         if (name == v) return name;
         const ShaderFunction* f = _registry.find(slot, name);
         if (std::find(f->traits.aliases.begin(), f->traits.aliases.end(), v) != f->traits.aliases.end()) return name;

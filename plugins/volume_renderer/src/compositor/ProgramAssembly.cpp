@@ -214,7 +214,7 @@ void ProgramAssembly::appendMembers(const std::string& numerics, const std::stri
     std::set<std::string> shared = definedNames(numerics);
     for (const std::string& n : definedNames(file("RaySetup/ray.glsl"))) shared.insert(n);
     const ShaderFunction* glue = lookup("MultiVolume", "member");
-    std::string rays, samples, skips;
+    std::string rays, samples, skips, values, classes;
     for (std::size_t k = 0; k < _composition.members.size(); ++k) {
         const std::string suffix = "_v" + std::to_string(k);
         const std::string of = " (member " + std::to_string(k) + ")";
@@ -225,6 +225,8 @@ void ProgramAssembly::appendMembers(const std::string& numerics, const std::stri
         rays += branch + " volren_memberRay" + suffix + "(origin, dir, memberOrigin, memberDir, worldPerT, tNear, tFar);\n";
         samples += branch + " return volren_memberSample" + suffix + "(pos, memberDir, worldLength, emitted);\n";
         skips += branch + " return volren_memberSkip" + suffix + "(memberOrigin, memberDir, t, tFar, tRecheck);\n";
+        values += branch + " return volren_memberValue" + suffix + "(pos, value);\n";
+        classes += branch + " return volren_memberClassify" + suffix + "(value);\n";
     }
     append("<MultiVolume dispatchers over " + std::to_string(_composition.members.size()) + " members>",
            "void volren_setMemberRay(int k, vec3 origin, vec3 dir, out vec3 memberOrigin, out vec3 memberDir,\n"
@@ -235,7 +237,10 @@ void ProgramAssembly::appendMembers(const std::string& numerics, const std::stri
                "float volren_setMemberSample(int k, vec3 pos, vec3 memberDir, float worldLength, out vec3 emitted)\n{\n" +
                samples + "    emitted = vec3(0.0);\n    return 0.0;\n}\n"
                "float volren_setMemberSkip(int k, vec3 memberOrigin, vec3 memberDir, float t, float tFar, out float tRecheck)\n{\n" +
-               skips + "    tRecheck = 1e30;\n    return t;\n}\n");
+               skips + "    tRecheck = 1e30;\n    return t;\n}\n"
+               "bool volren_setMemberValue(int k, vec3 pos, out float value)\n{\n" + values +
+               "    value = 0.0;\n    return false;\n}\n"
+               "vec4 volren_setMemberClassify(int k, float value)\n{\n" + classes + "    return vec4(0.0);\n}\n");
 }
 
 void ProgramAssembly::assembleBuild(const std::string& declarations, const std::string& numerics,

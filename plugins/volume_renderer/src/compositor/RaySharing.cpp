@@ -7,13 +7,14 @@
 
 namespace volren {
 
-bool CompositionPolicy::canShareRay(const Composition& composition) const
+std::string CompositionPolicy::memberKind(const Composition& composition) const
 {
     const ShaderFunction* traversal = _registry.find("RayTraversal", composition.functionFor("RayTraversal"));
     // A Shadowing that builds auxiliary data per node (a light volume) has no build for set members.
     const ShaderFunction* shadowing = _registry.find("Shadowing", composition.functionFor("Shadowing"));
-    return traversal && traversal->traits.emissionAbsorption && composition.functionFor("RaySetup") != "null" &&
-           !(shadowing && !shadowing->buildFile.empty());
+    if (!traversal || composition.functionFor("RaySetup") == "null" || (shadowing && !shadowing->buildFile.empty()))
+        return {};
+    return traversal->traits.sharesRayAs;
 }
 
 std::vector<RayGroup> CompositionPolicy::rayGroups(const std::vector<osg::BoundingBoxd>& bounds,
@@ -41,11 +42,30 @@ std::vector<RayGroup> CompositionPolicy::rayGroups(const std::vector<osg::Boundi
         if (added) out.emplace_back();
         out[it->second].members.push_back(i);
     }
-    for (RayGroup& g : out)
-        g.shared = g.members.size() > 1 && !forced &&
+    for (RayGroup& g : out) {
+        const std::string kind = memberKind(*compositions[g.members.front()]);
+        g.shared = g.members.size() > 1 && !forced && !kind.empty() &&
                    std::all_of(g.members.begin(), g.members.end(),
-                               [&](std::size_t i) { return canShareRay(*compositions[i]); });
+                               [&](std::size_t i) { return memberKind(*compositions[i]) == kind; });
+    }
     return out;
+}
+
+const ShaderFunction* CompositionPolicy::setTraversal(const std::vector<ChosenComposition>& members) const
+{
+    // The traversals that march members of this kind: a member's named one, else the one that
+    // combines media, else the first in name order.
+    const std::string kind = members.empty() ? std::string() : memberKind(members.front().composition);
+    std::vector<const ShaderFunction*> fitting;
+    for (const std::string& name : _registry.allNames("RayTraversal")) {
+        const ShaderFunction* f = _registry.find("RayTraversal", name);
+        if (f->traits.multiVolume && f->traits.sharesRayAs == kind) fitting.push_back(f);
+    }
+    for (const ShaderFunction* f : fitting)
+        if (f->name == members.front().setTraversal) return f;
+    for (const ShaderFunction* f : fitting)
+        if (f->traits.combines == "media") return f;
+    return fitting.empty() ? nullptr : fitting.front();
 }
 
 ChosenComposition CompositionPolicy::setComposition(std::vector<ChosenComposition>& members) const
@@ -54,17 +74,15 @@ ChosenComposition CompositionPolicy::setComposition(std::vector<ChosenCompositio
     // opaque geometry; everything a sample needs comes from the members' compositions.
     ChosenComposition set;
     set.composition = bare(defaultImplementation("RaySetup"));
-    for (const std::string& name : _registry.allNames("RayTraversal"))  // the first in name order
-        if (_registry.find("RayTraversal", name)->traits.multiVolume) {
-            set.composition.choice["RayTraversal"] = name;
-            break;
-        }
+    const ShaderFunction* traversal = setTraversal(members);
+    if (traversal) set.composition.choice["RayTraversal"] = traversal->name;
     if (!members.empty()) set.composition.choice["Jitter"] = members.front().composition.functionFor("Jitter");
     bool depth = false;
     for (ChosenComposition& m : members) {
         for (const SlotInfo& s : slots())
             if (s.perSet && s.name != "RayTraversal")
                 m.composition.choice[s.name] = s.name == "RaySetup" ? defaultImplementation("RaySetup") : "null";
+        if (traversal && traversal->traits.skips.empty()) m.composition.choice["Acceleration"] = "null";
         std::vector<std::string>& rays = m.composition.instances["ClipRay"];
         std::vector<ClipInfo>& clips = m.clips["ClipRay"];
         clips.resize(rays.size());

@@ -69,12 +69,12 @@ void registerRayTraversalFunctions(ShaderFunctionRegistry& registry)
     // The compositing traversals leap over what the Acceleration proves transparent.
     const SlotList skipping = {"Reconstruction", "Classification", "ClipPosition", "Shading", "Acceleration"};
     ShaderFunction frontToBack = traversal("dvr_front_to_back", skipping);
-    frontToBack.traits.emissionAbsorption = true;
+    frontToBack.traits.sharesRayAs = "emission_absorption";
     frontToBack.traits.aliases = {"dvr"};
     frontToBack.traits.skips = "opacity";
     registry.add(frontToBack);
     ShaderFunction backToFront = traversal("dvr_back_to_front", skipping);
-    backToFront.traits.emissionAbsorption = true;
+    backToFront.traits.sharesRayAs = "emission_absorption";
     backToFront.traits.skips = "opacity";
     registry.add(backToFront);
 
@@ -84,6 +84,7 @@ void registerRayTraversalFunctions(ShaderFunctionRegistry& registry)
         extremum.includes.push_back("RayTraversal/extremum.glsl");
         extremum.traits.skips = "extremum";
         extremum.traits.skipsByDefault = std::string(name) == "minip";  // docs/bench/skipping.md
+        if (std::string(name) == "mip") extremum.traits.sharesRayAs = "maximum";
         registry.add(extremum);
     }
     registry.add(traversal("average", projecting));
@@ -115,22 +116,40 @@ void registerRayTraversalFunctions(ShaderFunctionRegistry& registry)
     };
     registry.add(iso);
 
-    // A multi-volume set's traversal: bound once for the set, with the set's box, the finest
+    // A multi-volume set's traversals: bound once for the set, with the set's box, the finest
     // member step (BindContext::sampleDistance) and the strictest member's early termination;
     // the members' samples come from their MultiVolume/member glue.
-    registry.add({.slot = "RayTraversal",
-                  .name = "sum_of_media",
-                  .file = "MultiVolume/sum_of_media.glsl",
-                  .includes = {"RayTraversal/march.glsl"},
-                  .uniforms = bindings::geometry + std::vector<UniformDecl>{{"volren_sampleDistance", "float", ""},
-                                                                           {"volren_terminationDepth", "float", ""}},
-                  .bind =
-                      [](BindContext& c) {
-                          bindings::bindGeometry(c);
-                          c.uniform("volren_sampleDistance", float(c.sampleDistance));
-                          c.uniform("volren_terminationDepth", terminationDepth(c.settings.earlyTerminationThreshold));
-                      },
-                  .traits = {.calls = SlotList{}, .emissionAbsorption = true, .multiVolume = true}});
+    auto setTraversal = [](const std::string& name, const std::string& members, const std::string& combines,
+                           const std::string& memberTraversal) {
+        return ShaderFunction{
+            .slot = "RayTraversal",
+            .name = name,
+            .file = "MultiVolume/" + name + ".glsl",
+            .includes = combines == "media" ? std::vector<std::string>{"RayTraversal/march.glsl"}
+                                            : std::vector<std::string>{"RayTraversal/march.glsl", "MultiVolume/add_images.glsl"},
+            .uniforms = bindings::geometry + std::vector<UniformDecl>{{"volren_sampleDistance", "float", ""},
+                                                                     {"volren_terminationDepth", "float", ""}},
+            .bind =
+                [](BindContext& c) {
+                    bindings::bindGeometry(c);
+                    c.uniform("volren_sampleDistance", float(c.sampleDistance));
+                    c.uniform("volren_terminationDepth", terminationDepth(c.settings.earlyTerminationThreshold));
+                },
+            .traits = {.calls = SlotList{},
+                       .sharesRayAs = members,
+                       .memberTraversal = memberTraversal,
+                       .combines = combines,
+                       .multiVolume = true,
+                       .skips = combines == "maxima" ? "" : "opacity"}};
+    };
+    // Media add where members overlap (the default); `composite` names it.
+    ShaderFunction sum = setTraversal("sum_of_media", "emission_absorption", "media", "dvr_front_to_back");
+    sum.traits.aliases = {"composite"};
+    registry.add(sum);
+    // Each member's own emission-absorption image, added (napari's additive blending).
+    registry.add(setTraversal("additive", "emission_absorption", "images", "dvr_front_to_back"));
+    // Each member's maximum intensity projection, added (napari's MIP look).
+    registry.add(setTraversal("mip_additive", "maximum", "maxima", "mip"));
 }
 
 }  // namespace volren

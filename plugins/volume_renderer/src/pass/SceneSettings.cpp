@@ -6,6 +6,7 @@
 #include <volume_model/RenderSettings.h>
 #include <volume_model/TimeSeries.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -68,6 +69,38 @@ void showChannels(VolumeScene& scene, const std::string& value)
     }
 }
 
+/// `channelOpacity=S` or `C:S,...`: the opacity scale of every channel, or of the channels named,
+/// of the multi-channel volumes below `scene`.
+void scaleChannelOpacity(VolumeScene& scene, const std::string& value)
+{
+    const std::string expected = "expected an opacity scale >= 0, or channel:scale pairs separated by commas (0:2,1:0.5)";
+    std::vector<std::pair<int, double>> scales;  // channel -1: every channel
+    std::stringstream list(value);
+    for (std::string item; std::getline(list, item, ',');) {
+        const std::size_t colon = item.find(':');
+        const int c = colon == std::string::npos ? -1 : countFrom(item.substr(0, colon));
+        double s = 0.0;
+        if ((colon != std::string::npos && c < 0) ||
+            !parseFiniteNumber(colon == std::string::npos ? item : item.substr(colon + 1), s) || s < 0.0)
+            throw SettingError(expected + ", got '" + value + "'");
+        scales.emplace_back(c, s);
+    }
+    if (scales.empty() || (scales.size() > 1 && std::any_of(scales.begin(), scales.end(), [](const auto& p) { return p.first < 0; })))
+        throw SettingError(expected + ", got '" + value + "'");
+    for (VolumeNode* node : findVolumeNodes(scene)) {
+        const int count = node->getVolume() ? node->getVolume()->channels() : 0;
+        if (count < 2) continue;
+        for (const auto& [c, s] : scales)
+            if (c >= count)
+                throw SettingError("volume '" + node->getName() + "' has " + std::to_string(count) + " channels, not " +
+                                   std::to_string(c + 1));
+        if (node->channels.size() < std::size_t(count)) node->channels.resize(std::size_t(count));
+        for (const auto& [c, s] : scales)
+            for (int k = 0; k < count; ++k)
+                if (c < 0 || c == k) node->channels[std::size_t(k)].opacity = s;
+    }
+}
+
 }  // namespace
 
 void applySetting(VolumeScene& scene, const std::string& key, const std::string& value)
@@ -80,6 +113,10 @@ void applySetting(VolumeScene& scene, const std::string& key, const std::string&
         }
         if (key == "channels") {
             showChannels(scene, value);
+            return;
+        }
+        if (key == "channelOpacity") {
+            scaleChannelOpacity(scene, value);
             return;
         }
         if (key == "time") {
@@ -120,6 +157,8 @@ std::string settingsHelp(const CompositionPolicy& policy)
     out << "Scene settings:\n";
     out << "  " << std::left << std::setw(18) << "channels" << std::setw(14) << "all"
         << "channels multi-channel volumes show, all in one ray: all, or numbers from 0 (0,2)\n";
+    out << "  " << std::left << std::setw(18) << "channelOpacity" << std::setw(14) << "1"
+        << "opacity scale of every channel (2), or per channel (0:2,1:0.5); in MIP modes: brightness\n";
     out << "  " << std::left << std::setw(18) << "time" << std::setw(14) << "0"
         << "time point time-series volumes show (from 0; a shorter series shows its last)\n";
     out << "Pass settings:\n";
@@ -136,9 +175,15 @@ std::string settingsHelp(const CompositionPolicy& policy)
         for (std::size_t i = 0; i < names.size(); ++i) out << (i ? ", " : "") << names[i];
         if (!s.isTemplate && CompositionPolicy::neededImplementation(s.name) != CompositionPolicy::defaultImplementation(s.name))
             out << "   [" << CompositionPolicy::neededImplementation(s.name) << " when the scene needs it]";
+        std::string sets;  // how volumes that share a ray combine (multi-volume traversals)
+        for (const std::string& name : names)
+            if (const ShaderFunction* f = policy.registry().find(s.name, name); f && f->traits.multiVolume)
+                sets += (sets.empty() ? "" : ", ") + name + " (" + f->traits.combines + ")";
+        if (!sets.empty()) out << "   [how overlapping volumes and a volume's channels combine: " << sets << "]";
         std::string leaps;  // implementations chosen by the traversal's leaps (Acceleration)
         for (const std::string& name : names)
-            if (const ShaderFunction* f = policy.registry().find(s.name, name); f && !f->traits.skips.empty())
+            if (const ShaderFunction* f = policy.registry().find(s.name, name);
+                f && !f->traits.skips.empty() && !f->traits.multiVolume)
                 leaps += (leaps.empty() ? "" : ", ") + name +
                          (f->traits.approximates ? " (only when asked: approximates) leaps by "
                                                  : " where the traversal leaps by ") +

@@ -1,3 +1,4 @@
+#include <volume_renderer/Annotations.h>
 #include <volume_renderer/CameraFraming.h>
 
 #include <volume_model/VolumeNode.h>
@@ -12,12 +13,14 @@ namespace volren {
 
 namespace {
 
-/// ComputeBoundsVisitor that also counts VolumeNode boxes (they have no drawables).
+/// ComputeBoundsVisitor that also counts VolumeNode boxes (they have no drawables) and leaves
+/// out screen annotations (drawn in pixels).
 class SceneBounds : public osg::ComputeBoundsVisitor
 {
 public:
     void apply(osg::Node& node) override
     {
+        if (dynamic_cast<Annotations*>(&node)) return;
         if (auto* volume = dynamic_cast<VolumeNode*>(&node)) {
             const osg::BoundingBox box = volume->localBox();
             if (box.valid()) {

@@ -1,0 +1,29 @@
+// MultiVolume/mip_additive: a RayTraversal of a multi-volume set whose members are drawn with
+// MIP (channels of a microscopy volume, overlapping volumes): each member's maximum
+// reconstructed scalar along its own interval of the ray (sampled at the midpoints of segments
+// of volren_sampleDistance; clipped and NaN samples ignored), classified by its own transfer
+// function and premultiplied (napari's MIP look); the images add in MultiVolume/add_images.glsl
+// (volren_traverse). No leaps (members carry no Acceleration).
+// vec4 volren_memberImage(int k, vec3 dir, vec3 memberOrigin, vec3 memberDir, float worldPerT, float tNear,
+//                         float tFar, float jitter)
+// Calls, per member k (the compositor generates these dispatchers over MultiVolume/member.glsl):
+bool volren_setMemberValue(int k, vec3 pos, out float value);
+vec4 volren_setMemberClassify(int k, float value);
+
+vec4 volren_memberImage(int k, vec3 dir, vec3 memberOrigin, vec3 memberDir, float worldPerT, float tNear, float tFar,
+                        float jitter)
+{
+    VolrenMarch m;
+    if (!(tNear < tFar) || !volren_beginMarch(dir, tNear, tFar, jitter, m)) return vec4(0.0);
+    bool found = false;
+    float best = -3.4e38;
+    for (int i = 0; i < m.count; ++i) {
+        float value;
+        if (volren_setMemberValue(k, memberOrigin + memberDir * volren_segmentMid(m, i, tNear, tFar), value) &&
+            (!found || value > best)) {
+            best = value;
+            found = true;
+        }
+    }
+    return found ? volren_setMemberClassify(k, best) : vec4(0.0);
+}
