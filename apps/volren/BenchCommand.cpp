@@ -76,7 +76,7 @@ std::vector<BenchConfig> defaultMatrix()
 
 /// What a reference draws, so configurations that draw the same picture share one: each
 /// volume's lighting model as the policy chose it ("lit:blinn_phong", "lit:lambert/lighting_surface",
-/// "unlit").
+/// "unlit") and how it combines with overlapping ones ("unlit added", "unlit maximum").
 std::string lightingModel(const ReferenceScene& scene, bool lighting)
 {
     std::string key;
@@ -89,6 +89,9 @@ std::string lightingModel(const ReferenceScene& scene, bool lighting)
         if (lit && placed.shadows == ReferenceScene::Shadows::Exact) model += "+shadows";
         if (lit && placed.occlusion) model += "+occlusion";
         if (lit && placed.shadowsGeometry && scene.occluders) model += "+shadowed geometry";
+        // How it combines with the volumes it overlaps (the same media, other pictures).
+        if (placed.blending == ReferenceScene::Blending::Images) model += " added";
+        if (placed.blending == ReferenceScene::Blending::Maxima) model += " maximum";
         key += (key.empty() ? "" : "+") + model;
     }
     return key;

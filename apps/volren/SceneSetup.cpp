@@ -4,11 +4,15 @@
 #include <volume_renderer/SceneSettings.h>
 
 #include <volume_model/AssignTransferFunction.h>
-#include <volume_model/LengthUnit.h>
 #include <volume_model/DefaultScene.h>
+#include <volume_model/LengthUnit.h>
 #include <volume_model/ReadScene.h>
 #include <volume_model/SceneInputs.h>
 #include <volume_model/TimeSeries.h>
+
+#include <osg/Transform>
+
+#include <cmath>
 
 namespace volren::app {
 
@@ -60,9 +64,13 @@ osg::ref_ptr<Annotations> addAnnotations(VolumeScene& scene, const RenderOptions
     osg::ref_ptr<Annotations> annotations = new Annotations;
     annotations->setScaleBar(scaleBar);
     annotations->setAxes(axes);
-    for (const VolumeNode* node : findVolumeNodes(scene))
+    // The first volume's unit, where its world lengths are its own (a scaled placement: none).
+    for (VolumeNode* node : findVolumeNodes(scene))
         if (node->getVolume()) {
-            annotations->setUnit(lengthUnitOf(*node->getVolume()));
+            const osg::NodePathList paths = node->getParentalNodePaths();
+            const osg::Vec3d scale = paths.empty() ? osg::Vec3d(1, 1, 1) : osg::computeLocalToWorld(paths.front()).getScale();
+            const bool own = std::abs(scale.x() - 1.0) < 1e-9 && std::abs(scale.y() - 1.0) < 1e-9 && std::abs(scale.z() - 1.0) < 1e-9;
+            annotations->setUnit(own ? lengthUnitOf(*node->getVolume()) : std::string());
             break;
         }
     const osg::Vec3d& b = options.background;

@@ -22,8 +22,8 @@ std::string inputName(const RenderOptions& options);
 /// std::runtime_error / UsageError naming the file or setting.
 osg::ref_ptr<VolumeScene> loadScene(const RenderOptions& options);
 /// Adds the screen annotations the options ask for (--scale-bar, --axes; unset: `byDefault`) to
-/// `scene`: the scale bar in the first volume's length unit, white (black over a light
-/// background). Returns them (null when neither is shown).
+/// `scene`: the scale bar in the first volume's length unit (none when its placement scales it),
+/// white (black over a light background). Returns them (null when neither is shown).
 osg::ref_ptr<Annotations> addAnnotations(VolumeScene& scene, const RenderOptions& options, bool byDefault);
 /// The camera the options ask for (--eye, --center, --up, --fov, --ortho).
 CameraRequest cameraRequest(const RenderOptions& options);

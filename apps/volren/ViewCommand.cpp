@@ -103,6 +103,8 @@ int viewCommand(const std::vector<std::string>& args)
     std::unique_ptr<ChannelPanel> channels;  // a multi-channel volume: its channels, one editor each
     std::unique_ptr<RenderSettingsPanel> panel;
     TimePlayer player(*root);
+    TimePrefetcher prefetcher(*root, std::size_t(1) << 30);  // the next time points, up to 1 GiB of copies
+    player.setPrefetcher(&prefetcher);
     osg::ref_ptr<ImGuiOverlay> overlay;
     if (node && node->getTransferFunction()) {
         if (node->showsChannels())

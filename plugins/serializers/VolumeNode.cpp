@@ -140,9 +140,12 @@ bool readChannels(osgDB::InputStream& is, VolumeNode& node)
         const std::string what = field + " " + std::to_string(c);
         if (!readProperty(is, "Visible", what) || !readBool(is, channels[c].visible, what + " Visible") ||
             !readProperty(is, "TransferFunction", what) ||
-            !readObjectField(is, channels[c].transferFunction, what + " TransferFunction", "volren::TransferFunction") ||
-            !readProperty(is, "Opacity", what) || !readDouble(is, channels[c].opacity, what + " Opacity"))
+            !readObjectField(is, channels[c].transferFunction, what + " TransferFunction", "volren::TransferFunction"))
             return false;
+        // Opacity came later: text files without it keep 1 (binary files always hold it).
+        const bool hasOpacity = is.isBinary() ? readProperty(is, "Opacity", what) : is.matchString("Opacity");
+        if (hasOpacity && !readDouble(is, channels[c].opacity, what + " Opacity")) return false;
+        if (is.getException()) return false;
         if (channels[c].opacity < 0.0) return fail(is, what + " Opacity: " + std::to_string(channels[c].opacity) + " is negative"), false;
     }
     is >> is.END_BRACKET;

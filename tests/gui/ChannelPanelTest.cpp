@@ -60,6 +60,12 @@ TEST(ChannelPanel, AColourAndWindowRewriteTheChannelsTransferFunctionAsOneUndoSt
     EXPECT_FALSE(panel.editor().history().canUndo());
 
     EXPECT_THROW(panel.select(2), std::out_of_range);
+    const unsigned int edits = node->channels[0].transferFunction->modifiedCount();
+    panel.setColourWindow(0, {osg::Vec3(1, 1, 0), 6.0, 20.0, 0.3}, false);  // a drag going on
+    panel.setColourWindow(0, {osg::Vec3(1, 1, 0), 7.0, 20.0, 0.3}, true);   // and its end
+    EXPECT_GT(node->channels[0].transferFunction->modifiedCount(), edits);
+    ASSERT_TRUE(panel.editor().history().undo()) << "one step for the drag";
+    EXPECT_FALSE(panel.editor().history().canUndo());
     EXPECT_THROW(panel.setColourWindow(0, {osg::Vec3(1, 1, 1), 30.0, 12.0, 0.5}), std::invalid_argument);
     EXPECT_THROW(panel.setColourWindow(0, {osg::Vec3(1, 1, 1), 1.0, 2.0, 1.5}), std::invalid_argument);
 }
@@ -70,9 +76,9 @@ TEST(ChannelPanel, EachChannelsEditorShowsThatChannelsHistogram)
     ChannelPanel panel(node.get());
     for (int c = 0; c < 2; ++c) {
         panel.select(c);
-        (void)panel.editor();
-        const Volume* block = node->channelNode(c)->getVolume();
-        EXPECT_EQ(block->valueRange(), std::make_pair(10.0 * (c + 1), 10.0 * (c + 1))) << "channel " << c;
+        const Volume* shown = panel.editor().volume();
+        ASSERT_TRUE(shown);
+        EXPECT_EQ(shown->valueRange(), std::make_pair(10.0 * (c + 1), 10.0 * (c + 1))) << "channel " << c;
     }
 }
 

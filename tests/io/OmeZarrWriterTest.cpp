@@ -4,6 +4,7 @@
 // reading what was written.
 #include "TestData.h"
 
+#include <volume_model/LengthUnit.h>
 #include <volume_model/LoadProgress.h>
 #include <volume_model/OmeZarrImage.h>
 #include <volume_model/ReadVolume.h>
@@ -143,6 +144,9 @@ TEST(OmeZarrWriter, SharedCtRoundTripsWithEqualVoxelsSpacingRescaleAndMeanLevels
     EXPECT_EQ(back->spacing(), ct->spacing());  // JSON numbers round-trip exactly
     EXPECT_EQ(back->rescaleSlope(), ct->rescaleSlope());
     EXPECT_EQ(back->rescaleIntercept(), ct->rescaleIntercept());
+    std::string unit;  // NIfTI's xyzt_units mm, written under OME-NGFF's name
+    EXPECT_TRUE(back->getUserValue(spacingUnitKey, unit));
+    EXPECT_EQ(unit, "millimeter");
     ASSERT_EQ(back->byteSize(), ct->byteSize());
     EXPECT_EQ(std::memcmp(back->data(), ct->data(), ct->byteSize()), 0);
     // 256x242x154 -> 128x121x77 -> 64x61x39: three levels until every axis fits a 64 chunk.

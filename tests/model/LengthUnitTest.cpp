@@ -39,6 +39,7 @@ TEST(LengthUnit, LabelsMoveToThePrefixThatKeepsTheNumberBetweenOneAndAThousand)
     EXPECT_EQ(lengthLabel(0.002, micro), "2 nm");
     EXPECT_EQ(lengthLabel(5000, "m"), "5000 m") << "no prefix above metres";
     EXPECT_EQ(lengthLabel(123.456, "mm"), "123 mm");
+    EXPECT_EQ(lengthLabel(999.9996, "nm"), "1 \xC2\xB5m") << "rounded before the prefix is chosen";
     EXPECT_EQ(lengthLabel(20, ""), "20");
     EXPECT_EQ(lengthLabel(0.05, ""), "0.05");
     EXPECT_EQ(lengthLabel(10, "parsec"), "10 parsec");

@@ -10,6 +10,8 @@
 #include <volume_reference/ReferenceSetup.h>
 #include <volume_renderer/SceneSettings.h>
 
+#include <osg/MatrixTransform>
+
 #include <cmath>
 #include <cstring>
 
@@ -220,6 +222,47 @@ TEST_F(MultiChannel, AChannelsOpacityScaleActsAsItsTransferFunctionWithScaledOpa
     }
 }
 
+TEST_F(MultiChannel, MipVolumesThatDoNotOverlapCompositeFrontToBackInTheRendererAndTheReference)
+{
+    // Two MIP cubes one behind the other along z (boxes apart: two ray groups): each shows its
+    // classified maximum, the front one over the back one: c_f a_f + (1 - a_f) c_b a_b; the
+    // reference composites its groups the same way (it adds maxima only within a group).
+    auto cube = [](std::uint8_t value, const osg::Vec3& colour, double z) {
+        osg::ref_ptr<Volume> v = new Volume;
+        v->allocate(VoxelType::UInt8, {n, n, n});
+        std::fill(v->data(), v->data() + v->voxelCount(), value);
+        v->dirty();
+        osg::ref_ptr<osg::MatrixTransform> placed = new osg::MatrixTransform(osg::Matrixd::translate(0, 0, z));
+        placed->addChild(volumeNode(v.get(), colourWindowTransferFunction(colour, 0, 255).get()).get());
+        return placed;
+    };
+    osg::ref_ptr<VolumeScene> scene = new VolumeScene;
+    scene->addChild(cube(100, {0, 1, 0}, 10.0).get());   // front (nearer the camera at +z)
+    scene->addChild(cube(200, {1, 0, 1}, -10.0).get());  // back
+    applySetting(*scene, "traversal", "mip");
+    const int size = 24;
+    const osg::Matrixd view = osg::Matrixd::lookAt(osg::Vec3d(0, 0, 60), osg::Vec3d(), osg::Vec3d(0, 1, 0));
+    const osg::Matrixd projection = osg::Matrixd::ortho(-12, 12, -12, 12, 1, 120);
+    const Pixels gpu = render(scene.get(), size, size, view, projection);
+    ReferenceCamera camera;
+    camera.view = view;
+    camera.projection = projection;
+    camera.width = camera.height = size;
+    const ReferenceSetup setup = referenceSetup(*scene, camera, {});
+    const ReferenceImage truth = renderReference(setup.scene, camera, setup.options);
+    const double af = 100.0 / 255.0, ab = 200.0 / 255.0;
+    const osg::Vec3 expected = osg::Vec3(0, 1, 0) * float(af) + osg::Vec3(1, 0, 1) * float((1.0 - af) * ab);
+    for (int y = 6; y < 18; ++y)
+        for (int x = 6; x < 18; ++x) {
+            ASSERT_NEAR(gpu.at(x, y).a(), 1.0 - (1.0 - af) * (1.0 - ab), 3e-3) << x << "," << y;
+            ASSERT_NEAR(truth.at(x, y, 3), 1.0 - (1.0 - af) * (1.0 - ab), 1e-6) << x << "," << y;
+            for (int k = 0; k < 3; ++k) {
+                ASSERT_NEAR(gpu.at(x, y)[k], expected[k], 3e-3) << x << "," << y << " component " << k;
+                ASSERT_NEAR(truth.at(x, y, k), expected[k], 1e-6) << x << "," << y << " component " << k;
+            }
+        }
+}
+
 /// The shared 2-channel DNA stack (confocal, widefield) in its default scene: both channels
 /// through the file's LUTs (magenta, green) over their windows, unlit, one ray, blended as
 /// `traversal` says; against the reference of the same blending.
@@ -248,7 +291,7 @@ TEST_P(ConfocalBlending, TheSharedConfocalStackShowsBothChannelsAsTheReferenceOf
     ASSERT_EQ(scene->programs().size(), 1u) << "both channels in one program";
     const ReferenceSetup setup = referenceSetup(*scene, camera, {});
     ASSERT_EQ(setup.scene.volumes.size(), 2u) << "the reference places both channels";
-    EXPECT_EQ(setup.scene.blending, mode == "composite"  ? ReferenceScene::Blending::Media
+    EXPECT_EQ(setup.scene.volumes[1].blending, mode == "composite"  ? ReferenceScene::Blending::Media
                                     : mode == "additive" ? ReferenceScene::Blending::Images
                                                          : ReferenceScene::Blending::Maxima);
     const ReferenceImage truth = renderReference(setup.scene, camera, setup.options);

@@ -7,6 +7,7 @@
 #include <volume_model/ClipEllipsoidNode.h>
 #include <volume_model/ClipMaskNode.h>
 #include <volume_model/ClipPlaneNode.h>
+#include <volume_model/DefaultScene.h>
 #include <volume_model/ReadVolume.h>
 #include <volume_model/VolumeNode.h>
 #include <volume_renderer/VolumeScene.h>
@@ -22,6 +23,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 #include <sys/wait.h>
 
@@ -476,6 +478,24 @@ protected:
     std::string dir, text;
     TestScene scene;
 };
+
+TEST_F(SceneFileBad, ATextSceneWrittenBeforeChannelOpacitiesReadsThemAsOne)
+{
+    // Scenes from before the channels' Opacity field (the first Channels files) still read.
+    const std::string older = std::regex_replace(text, std::regex("Opacity [^ \n]+ ?"), "");
+    ASSERT_EQ(older.find("Opacity"), std::string::npos);
+    writeText(dir + "/older.osgt", older);
+    osg::ref_ptr<osg::Node> root = readSceneOrFail(dir + "/older.osgt");
+    ASSERT_TRUE(root);
+    std::vector<VolumeNode*> nodes = findVolumeNodes(*root);
+    bool found = false;
+    for (VolumeNode* node : nodes)
+        for (const ChannelDisplay& channel : node->channels) {
+            found = true;
+            EXPECT_EQ(channel.opacity, 1.0);
+        }
+    EXPECT_TRUE(found) << "the scene has channel displays";
+}
 
 TEST_F(SceneFileBad, MissingVolumeFileFailsNamingIt)
 {

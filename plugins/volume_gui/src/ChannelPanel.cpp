@@ -10,6 +10,18 @@
 
 namespace volren {
 
+namespace {
+
+/// Throws std::out_of_range unless `c` is a channel of `node`'s volume (`count` of them).
+void checkChannel(const VolumeNode& node, int c, int count)
+{
+    if (c < 0 || c >= count)
+        throw std::out_of_range("volume '" + node.getName() + "' has no channel " + std::to_string(c) + " (it has " +
+                                std::to_string(count) + ", counted from 0)");
+}
+
+}  // namespace
+
 ChannelPanel::ChannelPanel(VolumeNode* node) : _node(node) {}
 
 int ChannelPanel::channels() const
@@ -19,15 +31,13 @@ int ChannelPanel::channels() const
 
 void ChannelPanel::select(int c)
 {
-    if (c < 0 || c >= channels())
-        throw std::out_of_range("channel " + std::to_string(c) + " of " + std::to_string(channels()) + " channels");
+    checkChannel(*_node, c, channels());
     _selected = c;
 }
 
 TransferFunction* ChannelPanel::ownTransferFunction(int c)
 {
-    if (c < 0 || c >= channels())
-        throw std::out_of_range("channel " + std::to_string(c) + " of " + std::to_string(channels()) + " channels");
+    checkChannel(*_node, c, channels());
     if (_node->channels.size() < std::size_t(channels())) _node->channels.resize(std::size_t(channels()));
     ChannelDisplay& display = _node->channels[std::size_t(c)];
     if (!display.transferFunction) {
@@ -48,8 +58,7 @@ TransferFunctionEditor& ChannelPanel::editor()
 
 ChannelPanel::ColourWindow ChannelPanel::colourWindow(int c) const
 {
-    if (c < 0 || c >= channels())
-        throw std::out_of_range("channel " + std::to_string(c) + " of " + std::to_string(channels()) + " channels");
+    checkChannel(*_node, c, channels());
     const TransferFunction* tf = std::size_t(c) < _node->channels.size() && _node->channels[std::size_t(c)].transferFunction
                                      ? _node->channels[std::size_t(c)].transferFunction.get()
                                      : _node->getTransferFunction();
@@ -74,7 +83,7 @@ ChannelPanel::ColourWindow ChannelPanel::colourWindow(int c) const
     return cw;
 }
 
-void ChannelPanel::setColourWindow(int c, const ColourWindow& cw)
+void ChannelPanel::setColourWindow(int c, const ColourWindow& cw, bool record)
 {
     if (!(cw.low < cw.high)) throw std::invalid_argument("channel window: low must be below high");
     if (!(cw.opacity >= 0.0 && cw.opacity <= 1.0)) throw std::invalid_argument("channel window: opacity must be in [0, 1]");
@@ -84,11 +93,12 @@ void ChannelPanel::setColourWindow(int c, const ColourWindow& cw)
     TransferFunctionEditor& e = editor();  // its history records the step
     _selected = keep;
     tf->assign(*colourWindowTransferFunction(cw.colour, cw.low, cw.high, cw.opacity));
-    e.history().record();
+    if (record) e.history().record();
 }
 
 void ChannelPanel::draw()
 {
+    if (channels() == 0) return;
     ImGui::SetNextWindowSize(ImVec2(400, 60.0f + 70.0f * float(channels())), ImGuiCond_FirstUseEver);
     ImGui::Begin("Channels");
     const Volume* volume = _node->getVolume();
@@ -106,17 +116,20 @@ void ChannelPanel::draw()
         float colour[3] = {cw.colour.x(), cw.colour.y(), cw.colour.z()};
         const auto [lo, hi] = volume->valueRange();
         float window[2] = {float(cw.low), float(cw.high)};
+        // A drag changes the TF every frame and is one undo step when it ends.
         bool changed = ImGui::ColorEdit3("colour", colour, ImGuiColorEditFlags_NoInputs);
+        bool finished = ImGui::IsItemDeactivatedAfterEdit();
         ImGui::SameLine();
         changed |= ImGui::DragFloatRange2("window", &window[0], &window[1], float((hi - lo) / 500.0), float(lo), float(hi));
+        finished |= ImGui::IsItemDeactivatedAfterEdit();
         float scale = float(display.opacity);
         if (ImGui::SliderFloat("opacity scale", &scale, 0.0f, 10.0f, "%.2f", ImGuiSliderFlags_Logarithmic))
             display.opacity = std::max(0.0f, scale);
-        if (changed && window[0] < window[1]) {
+        if ((changed || finished) && window[0] < window[1]) {
             cw.colour.set(colour[0], colour[1], colour[2]);
             cw.low = window[0];
             cw.high = window[1];
-            setColourWindow(c, cw);
+            setColourWindow(c, cw, finished);
         }
         ImGui::PopID();
     }

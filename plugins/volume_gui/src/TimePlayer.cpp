@@ -23,6 +23,13 @@ void TimePlayer::show(int t)
 {
     _series.show(t);
     _current = t;
+    if (_prefetcher) _prefetcher->ahead(t);
+}
+
+void TimePlayer::setPrefetcher(TimePrefetcher* prefetcher)
+{
+    _prefetcher = prefetcher;
+    if (_prefetcher) _prefetcher->ahead(_current);
 }
 
 bool TimePlayer::advance(double seconds)

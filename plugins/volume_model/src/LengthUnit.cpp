@@ -37,16 +37,18 @@ std::string lengthUnitOf(const Volume& volume)
 std::string lengthLabel(double length, const std::string& unit)
 {
     static const std::array<std::string, 4> ladder = {"nm", "\xC2\xB5m", "mm", "m"};
+    auto round3 = [](double v) {  // to 3 significant digits
+        if (v == 0.0 || !std::isfinite(v)) return v;
+        const double scale = std::pow(10.0, 2.0 - std::floor(std::log10(std::abs(v))));
+        return std::round(v * scale) / scale;
+    };
     std::string u = unit;
+    length = round3(length);
     auto at = std::find(ladder.begin(), ladder.end(), u);
     if (at != ladder.end() && length > 0.0 && std::isfinite(length)) {
-        while (length >= 1000.0 && at + 1 != ladder.end()) length /= 1000.0, ++at;
-        while (length < 1.0 && at != ladder.begin()) length *= 1000.0, --at;
+        while (length >= 1000.0 && at + 1 != ladder.end()) length = round3(length / 1000.0), ++at;
+        while (length < 1.0 && at != ladder.begin()) length = round3(length * 1000.0), --at;
         u = *at;
-    }
-    if (length != 0.0 && std::isfinite(length)) {  // 3 significant digits, written without an exponent
-        const double scale = std::pow(10.0, 2.0 - std::floor(std::log10(std::abs(length))));
-        length = std::round(length * scale) / scale;
     }
     char number[64];
     std::snprintf(number, sizeof number, "%.12g", length);

@@ -66,8 +66,16 @@ VolumeNode* VolumeNode::channelNode(int c) const
     VolumeNode& node = *block.node;
     const int t = shownTimePoint();
     if (block.volume.get() != _volume.get() || block.modified != _volume->modifiedCount() || block.timePoint != t) {
-        node.setVolume(channelOf(*_volume, c, t).get());
-        ++_blockCopies;
+        auto ahead = _prefetched.find({c, t});
+        if (ahead != _prefetched.end() && ahead->second.from.get() == _volume.get() &&
+            ahead->second.modified == _volume->modifiedCount()) {
+            node.setVolume(ahead->second.block.get());
+            ++_prefetchHits;
+        } else {
+            node.setVolume(channelOf(*_volume, c, t).get());
+            ++_blockCopies;
+        }
+        if (ahead != _prefetched.end()) _prefetched.erase(ahead);
         block.volume = _volume.get();
         block.modified = _volume->modifiedCount();
         block.timePoint = t;
@@ -79,7 +87,8 @@ VolumeNode* VolumeNode::channelNode(int c) const
                                : _transferFunction.get();
     if (const double scale = std::size_t(c) < channels.size() ? channels[std::size_t(c)].opacity : 1.0; tf && scale != 1.0) {
         if (block.from.get() != tf || block.fromModified != tf->modifiedCount() || block.scale != scale || !block.scaled) {
-            block.scaled = scaledOpacity(*tf, scale);
+            if (!block.scaled) block.scaled = new TransferFunction;  // one object: renderers update its table
+            block.scaled->assign(*scaledOpacity(*tf, scale));
             block.from = tf;
             block.fromModified = tf->modifiedCount();
             block.scale = scale;
@@ -92,13 +101,65 @@ VolumeNode* VolumeNode::channelNode(int c) const
     return &node;
 }
 
+std::vector<int> VolumeNode::drawnChannels() const
+{
+    if (!showsChannels()) return {0};
+    std::vector<int> shown;
+    for (int c = 0; c < _volume->channels() && std::size_t(c) < channels.size(); ++c)
+        if (channels[std::size_t(c)].visible) shown.push_back(c);
+    return shown;
+}
+
+std::size_t VolumeNode::prefetch(int t, const std::vector<int>& channels)
+{
+    osg::ref_ptr<const Volume> volume;
+    unsigned int modified = 0;
+    std::vector<int> needed;
+    {
+        std::lock_guard<std::mutex> lock(_blockMutex);
+        if (!_volume || _volume->fullResolution() || t < 0 || t >= _volume->frames()) return 0;
+        volume = _volume;
+        modified = _volume->modifiedCount();
+        for (int c : channels) {
+            if (c < 0 || c >= _volume->channels()) continue;
+            auto it = _prefetched.find({c, t});
+            const bool shown = std::size_t(c) < _blockNodes.size() && _blockNodes[std::size_t(c)].timePoint == t &&
+                               _blockNodes[std::size_t(c)].volume.get() == volume.get() &&
+                               _blockNodes[std::size_t(c)].modified == modified;
+            if (!shown && (it == _prefetched.end() || it->second.from.get() != volume.get() || it->second.modified != modified))
+                needed.push_back(c);
+        }
+    }
+    std::size_t bytes = 0;
+    for (int c : needed) {
+        osg::ref_ptr<Volume> block = channelOf(*volume, c, t);  // outside the lock: the cull goes on
+        bytes += block->byteSize();
+        std::lock_guard<std::mutex> lock(_blockMutex);
+        _prefetched[{c, t}] = {block, volume, modified};
+    }
+    return bytes;
+}
+
+void VolumeNode::dropPrefetched(const std::function<bool(int c, int t)>& keep)
+{
+    std::lock_guard<std::mutex> lock(_blockMutex);
+    for (auto it = _prefetched.begin(); it != _prefetched.end();)
+        it = keep(it->first.first, it->first.second) ? std::next(it) : _prefetched.erase(it);
+}
+
+std::size_t VolumeNode::prefetchedBytes() const
+{
+    std::lock_guard<std::mutex> lock(_blockMutex);
+    std::size_t bytes = 0;
+    for (const auto& entry : _prefetched) bytes += entry.second.block->byteSize();
+    return bytes;
+}
+
 std::vector<VolumeNode*> VolumeNode::drawnNodes()
 {
     if (!drawsBlocks()) return {this};
-    if (!showsChannels()) return {channelNode(0)};
     std::vector<VolumeNode*> nodes;
-    for (int c = 0; c < _volume->channels() && std::size_t(c) < channels.size(); ++c)
-        if (channels[std::size_t(c)].visible) nodes.push_back(channelNode(c));
+    for (int c : drawnChannels()) nodes.push_back(channelNode(c));
     return nodes;
 }
 

@@ -51,19 +51,18 @@ ReferenceScene referenceScene(VolumeScene& scene)
     // Shadowing says which shadows are the truth.
     SceneOffer offer;
     offer.lights.resize(content.lights.size());
-    std::string combines;  // how the volumes combine: the traversal of a set of them (the first's)
     for (auto& placed : content.volumes) {
         const auto& node = static_cast<const VolumeNode&>(*placed.node);
         const ChosenComposition chosen = scene.policy().choose(node.settings, offer, scene.pass);
         placed.choice = chosen.composition.choice;
+        // How it combines with the volumes it overlaps: the set traversal it would be marched by.
         std::vector<ChosenComposition> alone{chosen};
         const ShaderFunction* set = ShaderFunctionRegistry::instance().find(
             "RayTraversal", scene.policy().setComposition(alone).composition.functionFor("RayTraversal"));
-        const std::string mine = set && !set->traits.combines.empty() ? set->traits.combines : "media";
-        if (!combines.empty() && mine != combines)
-            throw std::invalid_argument("reference: the volumes combine differently ('" + combines + "' and '" + mine +
-                                        "' for volume '" + node.getName() + "')");
-        combines = mine;
+        const std::string combines = set ? set->traits.combines : std::string();
+        placed.blending = combines == "images"   ? ReferenceScene::Blending::Images
+                          : combines == "maxima" ? ReferenceScene::Blending::Maxima
+                                                 : ReferenceScene::Blending::Media;
         // What the chosen Shadowing approximates, from its traits (a plugin's without them: nothing).
         if (auto it = placed.choice.find("Shadowing"); it != placed.choice.end())
             if (const ShaderFunction* f = ShaderFunctionRegistry::instance().find("Shadowing", it->second)) {
@@ -72,9 +71,6 @@ ReferenceScene referenceScene(VolumeScene& scene)
                 placed.shadowsGeometry = f->traits.shadowsGeometry;
             }
     }
-    content.blending = combines == "images"   ? ReferenceScene::Blending::Images
-                       : combines == "maxima" ? ReferenceScene::Blending::Maxima
-                                              : ReferenceScene::Blending::Media;
     return content;
 }
 

@@ -3,11 +3,13 @@
 // (the shadow rays of its lit samples converging on their own: Shadows.cpp).
 #include "Integrator.h"
 
+#include <osg/BoundingBox>
 #include <osg/LightSource>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 
 namespace volren::reference {
 
@@ -66,7 +68,7 @@ Medium mediumOf(const ReferenceScene& scene, const ReferenceScene::Placed& place
 }  // namespace
 
 Integrator::Integrator(const ReferenceScene& scene, const ReferenceCamera& camera, const ReferenceOptions& options)
-    : _options(options), _blending(scene.blending)
+    : _options(options)
 {
     _unit = std::numeric_limits<double>::infinity();
     const std::size_t lightCount = options.lighting ? std::min<std::size_t>(scene.lights.size(), 8) : 0;
@@ -77,6 +79,50 @@ Integrator::Integrator(const ReferenceScene& scene, const ReferenceCamera& camer
         Medium m = mediumOf(scene, placed, lightCount, eyeToWorld, _clips, options);
         _unit = std::min(_unit, m.unitLength);
         _media.push_back(m);
+    }
+    groupMedia(scene);
+}
+
+void Integrator::groupMedia(const ReferenceScene& scene)
+{
+    // Where every medium combines its media, one group: non-overlapping media integrated together
+    // are the same as composited in ray order. Otherwise the renderer's ray groups: boxes (world
+    // bounds of their corners) that overlap, transitively.
+    const std::size_t n = _media.size();
+    const bool media = std::all_of(scene.volumes.begin(), scene.volumes.end(), [](const ReferenceScene::Placed& p) {
+        return p.blending == ReferenceScene::Blending::Media;
+    });
+    if (media) {
+        Group all;
+        for (std::size_t i = 0; i < n; ++i) all.members.push_back(i);
+        _groups = {all};
+        return;
+    }
+    std::vector<osg::BoundingBoxd> bounds(n);
+    for (std::size_t i = 0; i < n; ++i)
+        for (int c = 0; c < 8; ++c) {
+            const osg::Vec3d corner((c & 1 ? 0.5 : -0.5) * _media[i].size.x, (c & 2 ? 0.5 : -0.5) * _media[i].size.y,
+                                    (c & 4 ? 0.5 : -0.5) * _media[i].size.z);
+            bounds[i].expandBy(corner * _media[i].localToWorld);
+        }
+    std::vector<std::size_t> root(n);
+    for (std::size_t i = 0; i < n; ++i) root[i] = i;
+    auto find = [&root](std::size_t i) {
+        while (root[i] != i) i = root[i] = root[root[i]];
+        return i;
+    };
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = i + 1; j < n; ++j) {
+            bool overlap = true;
+            for (int a = 0; a < 3; ++a)
+                overlap = overlap && bounds[i]._min[a] < bounds[j]._max[a] && bounds[j]._min[a] < bounds[i]._max[a];
+            if (overlap) root[find(j)] = find(i);
+        }
+    std::map<std::size_t, std::size_t> index;
+    for (std::size_t i = 0; i < n; ++i) {
+        auto [it, added] = index.emplace(find(i), _groups.size());
+        if (added) _groups.push_back({{}, scene.volumes[i].blending});  // the first member's
+        _groups[it->second].members.push_back(i);
     }
 }
 
@@ -142,16 +188,37 @@ bool Integrator::boxSpan(const Medium& m, const Ray& ray, double& a, double& b)
 
 glm::dvec4 Integrator::sample(const Ray& ray, double u0, double u1, double step, ShadowTally& tally) const
 {
-    if (_blending == ReferenceScene::Blending::Media) return march(ray, u0, u1, step, tally);
-    glm::dvec3 colour(0.0);
-    double clear = 1.0;  // prod(1 - alpha)
-    for (std::size_t k = 0; k < _media.size(); ++k) {
-        const glm::dvec4 image = _blending == ReferenceScene::Blending::Images ? march(ray, u0, u1, step, tally, int(k))
-                                                                                : maximum(ray, u0, u1, step, k);
-        colour += glm::dvec3(image);
-        clear *= 1.0 - image.a;
+    if (_groups.size() == 1 && _groups.front().blending == ReferenceScene::Blending::Media)
+        return march(ray, u0, u1, step, tally);
+    // Each group's image, in the order the ray enters the groups, composited front to back.
+    std::vector<std::pair<double, const Group*>> order;
+    for (const Group& g : _groups) {
+        double enter = 2.0;
+        for (std::size_t k : g.members)
+            if (double a = 0.0, b = 1.0; boxSpan(_media[k], ray, a, b)) enter = std::min(enter, a);
+        if (enter <= 1.0) order.emplace_back(enter, &g);
     }
-    return glm::dvec4(glm::min(colour, glm::dvec3(1.0)), 1.0 - clear);
+    std::stable_sort(order.begin(), order.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+    glm::dvec4 out(0.0);
+    for (const auto& [enter, g] : order) {
+        glm::dvec4 image(0.0);
+        if (g->blending == ReferenceScene::Blending::Media) {
+            image = march(ray, u0, u1, step, tally, &g->members);
+        } else {
+            glm::dvec3 colour(0.0);
+            double clear = 1.0;  // prod(1 - alpha)
+            for (std::size_t k : g->members) {
+                const std::vector<std::size_t> alone{k};
+                const glm::dvec4 one = g->blending == ReferenceScene::Blending::Images ? march(ray, u0, u1, step, tally, &alone)
+                                                                                        : maximum(ray, u0, u1, step, k);
+                colour += glm::dvec3(one);
+                clear *= 1.0 - one.a;
+            }
+            image = glm::dvec4(glm::min(colour, glm::dvec3(1.0)), 1.0 - clear);
+        }
+        out += (1.0 - out.a) * image;
+    }
+    return out;
 }
 
 glm::dvec4 Integrator::maximum(const Ray& ray, double u0, double u1, double step, std::size_t index) const
@@ -176,7 +243,8 @@ glm::dvec4 Integrator::maximum(const Ray& ray, double u0, double u1, double step
     return glm::dvec4(c.r() * c.a(), c.g() * c.a(), c.b() * c.a(), c.a());
 }
 
-glm::dvec4 Integrator::march(const Ray& ray, double u0, double u1, double step, ShadowTally& tally, int only) const
+glm::dvec4 Integrator::march(const Ray& ray, double u0, double u1, double step, ShadowTally& tally,
+                             const std::vector<std::size_t>* members) const
 {
     const double start = u0 * ray.length, end = u1 * ray.length;
     const auto count = std::size_t(std::ceil((end - start) / step));
@@ -192,7 +260,7 @@ glm::dvec4 Integrator::march(const Ray& ray, double u0, double u1, double step, 
         glm::dvec3 opaqueColour(0.0);
         if (!kept(p)) continue;
         for (std::size_t index = 0; index < _media.size(); ++index) {
-            if (only >= 0 && index != std::size_t(only)) continue;
+            if (members && std::find(members->begin(), members->end(), index) == members->end()) continue;
             const Medium& m = _media[index];
             const osg::Vec3d localPoint = osg::Vec3d(p.x, p.y, p.z) * m.worldToLocal;
             const glm::dvec3 local = toGlm(localPoint);

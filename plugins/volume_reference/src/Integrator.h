@@ -32,19 +32,30 @@ public:
 private:
     /// Where the ray is inside the box of `m`, as fractions [a, b] of the ray; false if nowhere.
     static bool boxSpan(const Medium& m, const Ray& ray, double& a, double& b);
-    /// The ray over [u0, u1] with `step` world units as the scene's blending combines the media.
+    /// The ray over [u0, u1] with `step` world units: each group of overlapping media as its
+    /// blending combines them, the groups front to back by where the ray enters them.
     glm::dvec4 sample(const Ray& ray, double u0, double u1, double step, ShadowTally& tally) const;
     /// Front-to-back over [u0, u1] of the ray with `step` world units, sampled at step midpoints,
-    /// through every medium (only < 0) or medium `only` alone; its shadow rays add to `tally`.
-    glm::dvec4 march(const Ray& ray, double u0, double u1, double step, ShadowTally& tally, int only = -1) const;
+    /// through the media `members` (null: every medium); its shadow rays add to `tally`.
+    glm::dvec4 march(const Ray& ray, double u0, double u1, double step, ShadowTally& tally,
+                     const std::vector<std::size_t>* members = nullptr) const;
     /// Medium `index`'s classified maximum over [u0, u1] of the ray (step midpoints; clipped and
     /// NaN points ignored), premultiplied; 0 where no point counts.
     glm::dvec4 maximum(const Ray& ray, double u0, double u1, double step, std::size_t index) const;
+    /// Sorts the media into _groups (the scene's blending per volume).
+    void groupMedia(const ReferenceScene& scene);
     /// Whether every clip shape keeps world point `p`.
     bool kept(const glm::dvec3& p) const;
 
     ReferenceOptions _options;
-    ReferenceScene::Blending _blending = ReferenceScene::Blending::Media;
+    /// Media whose world boxes overlap, transitively (the renderer's ray groups), and how each
+    /// group combines; one group of every medium when all combine their media.
+    struct Group
+    {
+        std::vector<std::size_t> members;
+        ReferenceScene::Blending blending = ReferenceScene::Blending::Media;
+    };
+    std::vector<Group> _groups;
     std::vector<Medium> _media;
     std::vector<Clip> _clips;  ///< from world coordinates
     double _unit = 1.0;

@@ -23,7 +23,7 @@ public:
     explicit ChannelPanel(VolumeNode* node);
 
     /// Draws the window and the selected channel's editor into the current ImGui frame and
-    /// applies this frame's changes.
+    /// applies this frame's changes (nothing for a node without a volume).
     void draw();
 
     /// Channels of the node's volume.
@@ -46,10 +46,11 @@ public:
     /// Channel `c`'s colour and window, read from its transfer function: the colour of its last
     /// point, the window from its last transparent point to its first point of full opacity.
     ColourWindow colourWindow(int c) const;
-    /// Rewrites channel `c`'s transfer function as colourWindowTransferFunction(`cw`): one undo
-    /// step of its editor. Throws std::out_of_range when there is no channel `c`, and
-    /// std::invalid_argument unless low < high and 0 <= opacity <= 1.
-    void setColourWindow(int c, const ColourWindow& cw);
+    /// Rewrites channel `c`'s transfer function as colourWindowTransferFunction(`cw`), recorded
+    /// as one undo step of its editor when `record` (a drag records once, when it ends). Throws
+    /// std::out_of_range when there is no channel `c`, and std::invalid_argument unless
+    /// low < high and 0 <= opacity <= 1.
+    void setColourWindow(int c, const ColourWindow& cw, bool record = true);
 
 private:
     TransferFunction* ownTransferFunction(int c);

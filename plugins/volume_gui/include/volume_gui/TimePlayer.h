@@ -1,4 +1,5 @@
 #pragma once
+#include <volume_model/TimePrefetcher.h>
 #include <volume_model/TimeSeries.h>
 
 #include <osg/Node>
@@ -18,8 +19,12 @@ public:
     int timePoints() const { return _series.timePoints(); }
     /// The time point shown.
     int current() const { return _current; }
-    /// Shows time point `t`; throws std::out_of_range when there is none.
+    /// Shows time point `t` (and asks the prefetcher, if any, for the ones after it); throws
+    /// std::out_of_range when there is none.
     void show(int t);
+    /// Copies the time points ahead of each shown one with `prefetcher` (null: none); it must
+    /// outlive this player. Starts with the time points after the current one.
+    void setPrefetcher(TimePrefetcher* prefetcher);
     /// Advances playback by `seconds` of wall time: while playing, one time point (after the last:
     /// the first) per 1 / framesPerSecond seconds, however many frames that takes; returns
     /// whether the shown time point changed.
@@ -34,6 +39,7 @@ public:
 
 private:
     TimeSeries _series;
+    TimePrefetcher* _prefetcher = nullptr;
     int _current = 0;
     double _carried = 0.0;  ///< seconds played since the last step
 };

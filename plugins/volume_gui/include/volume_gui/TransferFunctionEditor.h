@@ -42,6 +42,8 @@ public:
     /// Data value and active-channel level under screen position `p` (last draw()'s canvas).
     std::pair<double, double> valueAt(const ImVec2& p) const;
 
+    /// The volume whose histogram the editor shows (null: none).
+    const Volume* volume() const { return _volume.get(); }
     /// The undo/redo steps of the edited TF.
     TransferFunctionHistory& history() { return _history; }
     /// Saves to `path` (temporary file + rename); false with `error` set on failure.

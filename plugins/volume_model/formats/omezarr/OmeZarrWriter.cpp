@@ -18,6 +18,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 #include <unistd.h>
@@ -28,6 +29,16 @@ namespace fs = std::filesystem;
 using Json = nlohmann::json;
 
 namespace {
+
+/// OME-NGFF's name of a length unit symbol ("µm" -> "micrometer"), or "" for units it has none for.
+std::string ngffLengthUnit(const std::string& symbol)
+{
+    static const std::map<std::string, std::string> names = {{"nm", "nanometer"}, {"\xC2\xB5m", "micrometer"},
+                                                             {"mm", "millimeter"}, {"cm", "centimeter"},
+                                                             {"m", "meter"}};
+    const auto it = names.find(symbol);
+    return it == names.end() ? std::string() : it->second;
+}
 
 ZarrDataType dataTypeOf(VoxelType type)
 {
@@ -137,8 +148,8 @@ private:
 
     Json attributes(const Json& datasets) const
     {
-        std::string spaceUnit, timeUnit;
-        _volume.getUserValue(spacingUnitKey, spaceUnit);
+        std::string timeUnit;
+        const std::string spaceUnit = ngffLengthUnit(lengthUnitOf(_volume));  // "" where NGFF has no name for it
         _volume.getUserValue(timeUnitKey, timeUnit);
         Json axes = Json::array();
         const auto axis = [&](const char* name, const char* type, const std::string& unit) {

@@ -18,10 +18,10 @@ std::string lengthUnitSymbol(const std::string& name);
 /// it, or "" when unknown.
 std::string lengthUnitOf(const Volume& volume);
 
-/// `length` in `unit` written for a label with the SI prefix that keeps its number in
-/// [1, 1000) where the unit is a metric symbol ("1500 µm" -> "1.5 mm", "0.5 mm" -> "500 µm"),
-/// rounded to 3 significant digits, never with an exponent; a length without a unit is written
-/// alone ("20").
+/// `length` in `unit`, rounded to 3 significant digits, written for a label with the prefix
+/// that keeps its number in [1, 1000) where the unit is nm, µm, mm or m ("1500 µm" -> "1.5 mm",
+/// "0.5 mm" -> "500 µm"); a length without a unit is written alone ("20"). Numbers are written
+/// as %g writes them with 12 digits (an exponent only beyond that).
 std::string lengthLabel(double length, const std::string& unit);
 
 }  // namespace volren

@@ -8,6 +8,8 @@
 #include <osg/Node>
 #include <osg/NodeVisitor>
 
+#include <functional>
+#include <map>
 #include <mutex>
 #include <vector>
 
@@ -66,7 +68,21 @@ public:
     VolumeNode* channelNode(int c) const;
     /// Blocks channelNode() has copied out so far: each is one volume texture a renderer uploads
     /// (stepping a time series copies the shown channels of the new time point, nothing else).
+    /// Blocks taken from prefetch() are not copies of channelNode()'s (see prefetchHits()).
     std::size_t blockCopies() const { return _blockCopies; }
+    /// The channels drawnNodes() draws: the visible ones, or channel 0 when it shows one.
+    std::vector<int> drawnChannels() const;
+    /// Copies ahead of time the blocks of `channels` at time point `t` (drawnChannels(), read on
+    /// the thread that edits the node), so that channelNode() takes them instead of copying when
+    /// the node steps to `t`; safe while another thread draws the node, as long as the volume
+    /// is not reallocated meanwhile. Returns the bytes it copied.
+    std::size_t prefetch(int t, const std::vector<int>& channels);
+    /// Drops the prefetched blocks (channel c, time point t) for which `keep(c, t)` is false.
+    void dropPrefetched(const std::function<bool(int c, int t)>& keep);
+    /// Bytes of the prefetched blocks held now.
+    std::size_t prefetchedBytes() const;
+    /// Blocks channelNode() took from prefetch() instead of copying them.
+    std::size_t prefetchHits() const { return _prefetchHits; }
     /// The nodes a renderer draws for this one: itself, or channelNode(c) for each visible
     /// channel (channel 0 when it shows one channel).
     std::vector<VolumeNode*> drawnNodes();
@@ -98,6 +114,16 @@ private:
     };
     mutable std::vector<BlockNode> _blockNodes;  ///< per channel
     mutable std::size_t _blockCopies = 0;
+    /// Blocks copied ahead (prefetch), by (channel, time point), with the volume and its
+    /// modified count they were copied from.
+    struct Prefetched
+    {
+        osg::ref_ptr<Volume> block;
+        osg::ref_ptr<const Volume> from;
+        unsigned int modified = 0;
+    };
+    mutable std::map<std::pair<int, int>, Prefetched> _prefetched;
+    mutable std::size_t _prefetchHits = 0;
     mutable std::mutex _blockMutex;
 };
 

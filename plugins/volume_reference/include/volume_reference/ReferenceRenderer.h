@@ -60,7 +60,8 @@ struct ReferenceImage
 };
 
 /// Renders the emission-absorption integral of `scene`'s volumes (several volumes, overlapping or
-/// not, add their media: extinction and emission sum; or as ReferenceScene::blending says) seen
+/// not, add their media: extinction and emission sum; overlapping ones otherwise as their
+/// ReferenceScene::Placed::blending says, each group of them composited front to back) seen
 /// by `camera`. Rays run from the near
 /// plane to the far plane, so a camera inside a volume sees what is in front of it.
 /// With lights, each sample's emission is its TF colour lit as the node's settings say (Shading

@@ -22,6 +22,13 @@ struct ReferenceScene
     /// volume (what every GPU Shadowing method approximates).
     enum class Shadows { None, Exact };
 
+    /// How volumes whose boxes overlap combine along a ray (the renderer's multi-volume set
+    /// traversal: its ImplementationTraits::combines): their media add (the emission-absorption
+    /// integral of the summed medium: optical depths add, emissions mix), their own
+    /// emission-absorption images add, or their classified maxima (MIP, unlit, premultiplied)
+    /// add. Added colours are clamped to 1; the coverage of added images is 1 - prod(1 - alpha).
+    enum class Blending { Media, Images, Maxima };
+
     struct Placed
     {
         osg::ref_ptr<const osg::Node> node;
@@ -43,14 +50,12 @@ struct ReferenceScene
         /// through this volume (several such volumes: the product of theirs). referenceSetup()
         /// sets it from the traits of the renderer's Shadowing choice (shadowsGeometry).
         bool shadowsGeometry = false;
+        /// Volumes: how it combines with the volumes its box overlaps (transitively: a group, as
+        /// the renderer's ray groups); a group takes its first volume's. Groups that do not
+        /// overlap are composited front to back along each ray, as the renderer draws them.
+        /// referenceSetup() sets it from the renderer's set traversal for the volume.
+        Blending blending = Blending::Media;
     };
-    /// How the volumes combine along a ray (the renderer's multi-volume set traversal: its
-    /// ImplementationTraits::combines): their media add (the emission-absorption integral of the
-    /// summed medium: optical depths add, emissions mix), their own emission-absorption images
-    /// add, or their classified maxima (MIP, unlit, premultiplied) add. Added colours are clamped
-    /// to 1; the coverage of added images is 1 - prod(1 - alpha).
-    enum class Blending { Media, Images, Maxima };
-    Blending blending = Blending::Media;
     /// VolumeNodes with a volume and a transfer function (a multi-channel node as the nodes of
     /// its visible channels, VolumeNode::drawnNodes, as the renderer draws it)
     std::vector<Placed> volumes;

@@ -40,7 +40,9 @@ public:
     ScaleBar shownScaleBar() const;
     std::string shownLabel() const;  ///< see shownScaleBar
 
-    /// Culls: sizes the bar and turns the gizmo for the camera, then draws both.
+    /// Culls: sizes the bar and turns the gizmo for the camera, then draws both. The shapes are
+    /// rewritten for the camera culled last: one view, and a viewer that culls and draws in one
+    /// thread (as volren's are).
     void traverse(osg::NodeVisitor& nv) override;
     /// Invalid: annotations take no room in the scene.
     osg::BoundingSphere computeBound() const override { return osg::BoundingSphere(); }

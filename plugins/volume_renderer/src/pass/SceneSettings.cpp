@@ -87,13 +87,17 @@ void scaleChannelOpacity(VolumeScene& scene, const std::string& value)
     }
     if (scales.empty() || (scales.size() > 1 && std::any_of(scales.begin(), scales.end(), [](const auto& p) { return p.first < 0; })))
         throw SettingError(expected + ", got '" + value + "'");
-    for (VolumeNode* node : findVolumeNodes(scene)) {
+    const std::vector<VolumeNode*> nodes = findVolumeNodes(scene);
+    for (VolumeNode* node : nodes) {  // every value checked before any is applied
+        const int count = node->getVolume() ? node->getVolume()->channels() : 0;
+        for (const auto& [c, s] : scales)
+            if (count >= 2 && c >= count)
+                throw SettingError("volume '" + node->getName() + "' has no channel " + std::to_string(c) + " (it has " +
+                                   std::to_string(count) + ", counted from 0)");
+    }
+    for (VolumeNode* node : nodes) {
         const int count = node->getVolume() ? node->getVolume()->channels() : 0;
         if (count < 2) continue;
-        for (const auto& [c, s] : scales)
-            if (c >= count)
-                throw SettingError("volume '" + node->getName() + "' has " + std::to_string(count) + " channels, not " +
-                                   std::to_string(c + 1));
         if (node->channels.size() < std::size_t(count)) node->channels.resize(std::size_t(count));
         for (const auto& [c, s] : scales)
             for (int k = 0; k < count; ++k)

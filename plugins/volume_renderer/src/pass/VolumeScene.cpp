@@ -193,8 +193,9 @@ void VolumeScene::traverse(osg::NodeVisitor& nv)
             }
         } else if (nodes.size() > 1 && p.warnedOverlaps.insert(nodes).second) {
             OSG_WARN << "volren: volume '" << nodes.front()->getName() << "' and " << nodes.size() - 1
-                     << " other(s) overlap but not all composite emission-absorption (or a composition is "
-                        "forced); they are drawn one after another, which is exact only where they do not overlap"
+                     << " other(s) overlap but are not all drawn by traversals of one kind that share a ray "
+                        "(emission-absorption, or MIP), or a composition is forced; they are drawn one after "
+                        "another, which is exact only where they do not overlap"
                      << std::endl;
         }
         for (std::size_t i : group.members) {

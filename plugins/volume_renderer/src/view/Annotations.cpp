@@ -209,7 +209,6 @@ Annotations::Annotations() : _parts(std::make_shared<Parts>())
     ss->setRenderBinDetails(1000, "RenderBin");  // after the volumes (bin 10); never opaque geometry
     ss->setMode(GL_DEPTH_TEST, osg::StateAttribute::OFF | osg::StateAttribute::OVERRIDE);
     ss->setAttributeAndModes(new osg::Depth(osg::Depth::ALWAYS, 0.0, 1.0, false));
-    ss->setMode(GL_LIGHTING, osg::StateAttribute::OFF);
 
     _hud = new osg::Camera;
     _hud->setReferenceFrame(osg::Transform::ABSOLUTE_RF);
