@@ -16,6 +16,9 @@ struct UniformDecl
     std::string glslType = {};   ///< "float", "vec2", "mat4", ...
     std::string arraySize = {};  ///< GLSL array size expression, empty for a single value
     bool shared = false;    ///< one value per program: not renamed per template instance
+    /// Read by the ray caster only, never by the implementation's compute build (buildFile), so
+    /// a change of it does not rebuild the auxiliary volume (the opaque geometry's shadow maps).
+    bool rayCasterOnly = false;
 };
 
 /// A texture an implementation samples; the compositor gives each distinct name a unit.
@@ -24,6 +27,7 @@ struct TextureDecl
     std::string name = {};         ///< GLSL sampler name
     std::string samplerType = {};  ///< "sampler3D", "sampler1D", ...
     bool shared = false;      ///< one texture per program: not renamed per template instance
+    bool rayCasterOnly = false;  ///< see UniformDecl::rayCasterOnly
 };
 
 /// A list of slot names.

@@ -19,10 +19,12 @@ using bindings::operator+;
 namespace {
 
 /// Every shadowing method reads the opaque geometry's shadow maps (Shadowing/geometry_shadow.glsl).
-const std::vector<UniformDecl> geometryShadowUniforms = {{"volren_geometryShadowCount", "int", ""},
-                                                         {"volren_geometryShadowMatrix", "mat4", "4"},
-                                                         {"volren_geometryShadowBias", "float", "4"}};
-const TextureDecl geometryShadowTexture = {"volren_geometryShadow", "sampler2DArray"};
+// The opaque geometry's shadow maps: the ray caster's only (a light volume's build ignores them).
+const std::vector<UniformDecl> geometryShadowUniforms = {
+    {.name = "volren_geometryShadowCount", .glslType = "int", .rayCasterOnly = true},
+    {.name = "volren_geometryShadowMatrix", .glslType = "mat4", .arraySize = "4", .rayCasterOnly = true},
+    {.name = "volren_geometryShadowBias", .glslType = "float", .arraySize = "4", .rayCasterOnly = true}};
+const TextureDecl geometryShadowTexture = {.name = "volren_geometryShadow", .samplerType = "sampler2DArray", .rayCasterOnly = true};
 
 /// The maps' matrices from the volume's texture space and their depth bias (half a voxel along the
 /// volume's axis where the map's depth changes fastest, in map depth at the box's centre), or

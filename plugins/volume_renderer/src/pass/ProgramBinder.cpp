@@ -137,8 +137,7 @@ std::string builtVolumeKey(const BindContext& context, const std::vector<const B
         for (const UniformDecl& u : b->function->uniforms) {
             const std::string name = (u.shared ? u.name : u.name + b->suffix) + b->memberSuffix;
             const osg::Uniform* uniform = context.stateSet.getUniform(name);
-            if (!uniform || (!kind.readsLights && name.rfind("volren_light", 0) == 0)) continue;
-            if (name.rfind("volren_geometryShadow", 0) == 0) continue;  // the ray caster's, never a build's
+            if (!uniform || u.rayCasterOnly || (!kind.readsLights && name.rfind("volren_light", 0) == 0)) continue;
             putArray(uniform->getFloatArray());
             putArray(uniform->getDoubleArray());
             putArray(uniform->getIntArray());
@@ -147,8 +146,7 @@ std::string builtVolumeKey(const BindContext& context, const std::vector<const B
         for (const TextureDecl& t : b->function->textures) {
             const std::string name = (t.shared ? t.name : t.name + b->suffix) + b->memberSuffix;
             auto unit = context.textureUnits.find(name);
-            if (unit == context.textureUnits.end() || name.rfind(kind.sampler, 0) == 0 ||
-                name.rfind("volren_geometryShadow", 0) == 0)
+            if (unit == context.textureUnits.end() || name.rfind(kind.sampler, 0) == 0 || t.rayCasterOnly)
                 continue;  // what is built, and what only the ray caster reads
             put(context.stateSet.getTextureAttribute(unsigned(unit->second), osg::StateAttribute::TEXTURE));
         }
