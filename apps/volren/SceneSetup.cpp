@@ -68,8 +68,11 @@ osg::ref_ptr<Annotations> addAnnotations(VolumeScene& scene, const RenderOptions
     for (VolumeNode* node : findVolumeNodes(scene))
         if (node->getVolume()) {
             const osg::NodePathList paths = node->getParentalNodePaths();
-            const osg::Vec3d scale = paths.empty() ? osg::Vec3d(1, 1, 1) : osg::computeLocalToWorld(paths.front()).getScale();
-            const bool own = std::abs(scale.x() - 1.0) < 1e-9 && std::abs(scale.y() - 1.0) < 1e-9 && std::abs(scale.z() - 1.0) < 1e-9;
+            const osg::Matrixd m = paths.empty() ? osg::Matrixd() : osg::computeLocalToWorld(paths.front());
+            bool own = true;  // a rotation at most: the 3x3 part times its transpose is the identity
+            for (int i = 0; i < 3; ++i)
+                for (int j = 0; j < 3; ++j)
+                    own = own && std::abs(m(i, 0) * m(j, 0) + m(i, 1) * m(j, 1) + m(i, 2) * m(j, 2) - (i == j)) < 1e-9;
             annotations->setUnit(own ? lengthUnitOf(*node->getVolume()) : std::string());
             break;
         }

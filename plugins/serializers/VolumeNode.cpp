@@ -142,7 +142,8 @@ bool readChannels(osgDB::InputStream& is, VolumeNode& node)
             !readProperty(is, "TransferFunction", what) ||
             !readObjectField(is, channels[c].transferFunction, what + " TransferFunction", "volren::TransferFunction"))
             return false;
-        // Opacity came later: text files without it keep 1 (binary files always hold it).
+        // Opacity came later: text files without it keep 1. Binary files always hold it (.osgb
+        // scenes with Channels written before it, one day of development, do not read).
         const bool hasOpacity = is.isBinary() ? readProperty(is, "Opacity", what) : is.matchString("Opacity");
         if (hasOpacity && !readDouble(is, channels[c].opacity, what + " Opacity")) return false;
         if (is.getException()) return false;

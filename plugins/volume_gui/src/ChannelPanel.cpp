@@ -125,11 +125,20 @@ void ChannelPanel::draw()
         float scale = float(display.opacity);
         if (ImGui::SliderFloat("opacity scale", &scale, 0.0f, 10.0f, "%.2f", ImGuiSliderFlags_Logarithmic))
             display.opacity = std::max(0.0f, scale);
-        if ((changed || finished) && window[0] < window[1]) {
+        if (_dragging.size() < std::size_t(channels())) _dragging.resize(std::size_t(channels()), false);
+        if (changed && window[0] < window[1]) {
             cw.colour.set(colour[0], colour[1], colour[2]);
             cw.low = window[0];
             cw.high = window[1];
-            setColourWindow(c, cw, finished);
+            setColourWindow(c, cw, false);
+            _dragging[std::size_t(c)] = true;
+        }
+        if (finished && _dragging[std::size_t(c)]) {  // the drag's one undo step (a menu action alone edits nothing)
+            const int keep = _selected;
+            _selected = c;
+            editor().history().record();
+            _selected = keep;
+            _dragging[std::size_t(c)] = false;
         }
         ImGui::PopID();
     }

@@ -34,7 +34,7 @@ void TimePrefetcher::ahead(int shown)
     std::vector<Drawn> drawn;
     for (const auto& node : _nodes) {
         const Volume& v = *node->getVolume();
-        Drawn d{node, node->drawnChannels(), 0, node->showsChannels()};
+        Drawn d{node, node->drawnChannels(), 0, node->showsChannels(), v.frames()};
         d.bytes = d.channels.size() * v.voxelCount() * voxelSize(v.type());
         drawn.push_back(std::move(d));
     }
@@ -89,15 +89,17 @@ void TimePrefetcher::run()
 void TimePrefetcher::fill(int shown, const std::vector<Drawn>& drawn)
 {
     // The window of time points ahead that fits: each time point costs the blocks every node
-    // draws of it (time point 0 of a one-channel node is drawn from its volume, not a block).
-    auto needed = [](const Drawn& d, int t) { return t > 0 || d.blocksAtZero; };
+    // draws of it (time point 0 of a one-channel node is drawn from its volume, not a block; a
+    // node shows its last time point past its own). The shown time point's blocks may still wait
+    // for the cull that takes them: they stay, and count.
+    auto needed = [](const Drawn& d, int t) { return (t > 0 || d.blocksAtZero) && t < d.frames; };
     auto cost = [&](int t) {
         std::size_t bytes = 0;
         for (const Drawn& d : drawn) bytes += needed(d, t) ? d.bytes : 0;
         return bytes;
     };
-    std::vector<int> window;
-    std::size_t planned = 0;
+    std::vector<int> window{shown};
+    std::size_t planned = cost(shown);
     for (int k = 1; k < _timePoints; ++k) {
         const int t = (shown + k) % _timePoints;
         if (planned + cost(t) > _budget) break;
@@ -110,6 +112,7 @@ void TimePrefetcher::fill(int shown, const std::vector<Drawn>& drawn)
                    std::find(d.channels.begin(), d.channels.end(), c) != d.channels.end();
         });
     for (int t : window) {
+        if (t == shown) continue;  // copied already, or copied by the cull
         {
             std::lock_guard<std::mutex> lock(_mutex);
             if (_stop || _wanted >= 0) return;  // a newer step: its window instead

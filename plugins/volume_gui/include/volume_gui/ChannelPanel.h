@@ -58,6 +58,7 @@ private:
     osg::ref_ptr<VolumeNode> _node;
     int _selected = 0;
     std::vector<std::unique_ptr<TransferFunctionEditor>> _editors;  ///< per channel, made when first shown
+    std::vector<bool> _dragging;  ///< per channel: a colour or window drag changed its TF, not yet recorded
 };
 
 }  // namespace volren

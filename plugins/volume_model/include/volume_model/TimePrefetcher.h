@@ -15,9 +15,10 @@ namespace volren {
 /// RAM budget, for the time-series nodes below a scene root (those whose volumes have several
 /// time points): after each step (ahead()), the blocks the nodes draw of the following time
 /// points (wrapping after the last) are copied out (VolumeNode::prefetch) until the next time
-/// point would pass the budget; blocks of time points no longer ahead are dropped. A step to a
-/// prefetched time point then only uploads. The series' volumes stay whole in memory; the budget
-/// bounds the copies only.
+/// point would pass the budget; blocks of time points no longer ahead are dropped, except the
+/// shown one's, which the next cull takes (and which count against the budget until then). A
+/// step to a prefetched time point then only uploads. The series' volumes stay whole in memory;
+/// the budget bounds the copies only.
 class TimePrefetcher
 {
 public:
@@ -44,6 +45,7 @@ private:
         std::vector<int> channels;
         std::size_t bytes = 0;  ///< of one time point's blocks of those channels
         bool blocksAtZero = false;  ///< whether time point 0 is drawn as blocks (several channels)
+        int frames = 1;             ///< its volume's time points (later ones show its last)
     };
     void run();
     void fill(int shown, const std::vector<Drawn>& drawn);
