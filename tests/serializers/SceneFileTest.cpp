@@ -428,7 +428,8 @@ TEST(SceneFile, SettingsSerializerCoversEveryRenderSettingsKey)
     // survive the round trip.
     const std::string dir = tempDirectory();
     const std::vector<std::string> candidates = {"0.123456789012345", "0.987654321098765", "3.14159265358979",
-                                                 "null", "7", "scalar", "Gradient", "on", "off", "16bit"};
+                                                 "null", "7", "scalar", "Gradient", "on", "off", "16bit",
+                                                 "0:0.123456789012345,0.987654321098765:1"};
     for (const auto& [key, what] : RenderSettings::keys()) {
         osg::ref_ptr<VolumeNode> node = new VolumeNode;
         std::string error;

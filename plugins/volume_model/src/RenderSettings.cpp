@@ -19,7 +19,8 @@ const std::vector<std::pair<std::string, std::string>>& slotKeys()
         {"classification", "Classification"}, {"gradient", "Gradient"},
         {"gradientinput", "GradientInput"}, {"shading", "Shading"},
         {"illumination", "Illumination"}, {"shadowing", "Shadowing"},
-        {"acceleration", "Acceleration"}, {"volumestorage", "VolumeStorage"}};
+        {"acceleration", "Acceleration"}, {"volumestorage", "VolumeStorage"},
+        {"weighting", "Weighting"}};
     return keys;
 }
 
@@ -77,7 +78,7 @@ bool RenderSettings::operator==(const RenderSettings& o) const
            same(aoDistance, o.aoDistance) &&
            same(anisotropy, o.anisotropy) &&
            memoryBudgetMB == o.memoryBudgetMB && brickSize == o.brickSize && lodByDistance == o.lodByDistance && texturePrecision == o.texturePrecision &&
-           functions == o.functions && forceNull == o.forceNull;
+           weighting == o.weighting && functions == o.functions && forceNull == o.forceNull;
 }
 
 std::string RenderSettings::slotForKey(const std::string& key)
@@ -120,6 +121,9 @@ std::vector<std::pair<std::string, std::string>> RenderSettings::keys()
         {"roughness", "Cook-Torrance roughness (0..1]"},
         {"threshold", "threshold classification level, 0..1 of the value window"},
         {"debugView", "debug shading view: scalar, position, classification, gradient, normal, view, light"},
+        {"weightX", "spatial weighting along x: 'u:w,u:w,...' (u in [0,1] of the volume's width, weights in [0,1]) or 'ramp:A'; scales opacity"},
+        {"weightY", "spatial weighting along y (as weightX)"},
+        {"weightZ", "spatial weighting along z (as weightX; 'ramp:0.05' fades the first and last 5% of the slices)"},
         {"forceNull", "comma-separated slots forced to their null implementation"}};
     for (const auto& [name, slot] : slotKeys()) out.push_back({name, "implementation of slot " + slot});
     return out;
@@ -162,6 +166,9 @@ std::string RenderSettings::get(const std::string& key) const
     if (k == "roughness") return number(roughness);
     if (k == "threshold") return number(threshold);
     if (k == "debugview") return debugViewNames()[std::size_t(debugView)];
+    if (k == "weightx") return weighting.axes[0].text();
+    if (k == "weighty") return weighting.axes[1].text();
+    if (k == "weightz") return weighting.axes[2].text();
     if (k == "forcenull") {
         std::string list;
         for (const auto& s : forceNull) list += (list.empty() ? "" : ",") + s;
@@ -177,6 +184,12 @@ bool RenderSettings::set(const std::string& key, const std::string& value, std::
         const std::string name = canonicalFunction(lower(value));
         if (!isIdentifier(name)) return error = key + " must name an implementation, got '" + value + "'", false;
         functions[slot] = name;
+        return true;
+    }
+    if (k == "weightx" || k == "weighty" || k == "weightz") {
+        WeightCurve curve;
+        if (!WeightCurve::parse(value, curve, error)) return error = key + ": " + error, false;
+        weighting.axes[std::size_t(k[6] - 'x')] = curve;
         return true;
     }
     if (k == "forcenull") {

@@ -1,4 +1,6 @@
 #pragma once
+#include <volume_model/SpatialWeighting.h>
+
 #include <limits>
 #include <map>
 #include <set>
@@ -82,6 +84,9 @@ struct RenderSettings
     /// What debug shading shows: 0 scalar, 1 position, 2 classification, 3 gradient, 4 normal,
     /// 5 view direction, 6 light direction.
     int debugView = 4;
+    /// Spatial weighting: per-axis curves over the normalised coordinates scaling each sample's
+    /// opacity (the Weighting slot's axes implementation; all 1 = none).
+    SpatialWeighting weighting;
 
     /// Slot -> implementation chosen by the user ("RayTraversal" -> "mip"); unset slots are
     /// chosen by the scene analysis.
