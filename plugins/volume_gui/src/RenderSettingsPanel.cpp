@@ -2,6 +2,8 @@
 
 #include <imgui.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <sstream>
 
 namespace volren {
@@ -16,6 +18,33 @@ void RenderSettingsPanel::apply(const std::string& key, const std::string& value
     std::string error;
     if (!_node->settings.set(key, value, error)) _error = key + ": " + error;
     else _error.clear();
+}
+
+namespace {
+
+const char* const weightKeys[3] = {"weightX", "weightY", "weightZ"};
+
+}  // namespace
+
+double RenderSettingsPanel::fade(int axis) const
+{
+    const WeightCurve& curve = _node->settings.weighting.axes[std::size_t(axis)];
+    if (curve.knots.empty()) return 0.0;
+    const double a = curve.knots.size() > 1 ? curve.knots[1].first : 0.0;
+    WeightCurve ramp;
+    std::string error;
+    std::ostringstream text;
+    text.precision(17);
+    text << "ramp:" << a;
+    return WeightCurve::parse(text.str(), ramp, error) && ramp == curve ? a : -1.0;
+}
+
+void RenderSettingsPanel::setFade(int axis, double fraction)
+{
+    std::ostringstream text;
+    text.precision(17);
+    if (fraction > 0.0) text << "ramp:" << std::min(fraction, 0.5);
+    apply(weightKeys[axis], fraction > 0.0 ? text.str() : "none");
 }
 
 void RenderSettingsPanel::draw()
@@ -86,6 +115,23 @@ void RenderSettingsPanel::draw()
         std::string list;
         for (const std::string& s : nulls) list += (list.empty() ? "" : ",") + s;
         apply("forceNull", list);
+    }
+    // Spatial weighting: each axis's ends faded (the slider) or any curve "u:w,u:w,..." (Enter applies).
+    if (ImGui::CollapsingHeader("spatial weighting")) {
+        for (int axis = 0; axis < 3; ++axis) {
+            ImGui::PushID(axis);
+            const double current = fade(axis);
+            float fraction = float(std::max(current, 0.0));
+            const std::string label = std::string("fade ends ") + "xyz"[axis];
+            if (ImGui::SliderFloat(label.c_str(), &fraction, 0.0f, 0.5f, current < 0.0 ? "(curve)" : "%.3f"))
+                setFade(axis, fraction);
+            char text[512];
+            const std::string curve = _node->settings.get(weightKeys[axis]);
+            std::snprintf(text, sizeof(text), "%s", curve.c_str());
+            if (ImGui::InputText(weightKeys[axis], text, sizeof(text), ImGuiInputTextFlags_EnterReturnsTrue))
+                apply(weightKeys[axis], text);
+            ImGui::PopID();
+        }
     }
     if (!_error.empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", _error.c_str());
     ImGui::End();

@@ -10,7 +10,8 @@ namespace volren {
 /// The settings of one VolumeNode as an ImGui window ("Volume settings"): traversal,
 /// reconstruction, gradient, illumination, shadowing and acceleration (from the implementation
 /// names the caller offers, e.g. the renderer's registry), sample rate, early termination, the
-/// shadow step factor, light volume scale and scattering anisotropy, and clipping on or off. Every
+/// shadow step factor, light volume scale and scattering anisotropy, clipping on or off, and the
+/// spatial weighting per axis (a fade of both ends, or any curve as text). Every
 /// change goes through RenderSettings::set, so it is validated like `--set`; the renderer picks
 /// it up in the next frame.
 class RenderSettingsPanel
@@ -23,6 +24,11 @@ public:
     void draw();
     /// The last rejected change (empty when all were accepted).
     const std::string& error() const { return _error; }
+    /// The fraction of axis `axis` (0 x, 1 y, 2 z) each end of it fades over when its weighting is
+    /// such a ramp (WeightCurve "ramp:A"), 0 when it has none, -1 for any other curve.
+    double fade(int axis) const;
+    /// Weighs axis `axis` by a fade of both ends over `fraction` of it (0: no weighting).
+    void setFade(int axis, double fraction);
 
 private:
     void apply(const std::string& key, const std::string& value);
