@@ -38,6 +38,10 @@ float volren_occlusion(vec3 pos, vec3 normal);
 // Shading: emitted colour of a classified sample seen along viewDir (towards the eye).
 vec3 volren_shade(vec3 pos, vec3 viewDir, vec4 classified);
 
+// Weighting: the factor (>= 0) on the opacity of the sample at pos by where it lies in the
+// volume (spatial weighting); 1 everywhere for null.
+float volren_weight(vec3 pos);
+
 // ClipPosition (template over clip shapes): true where the sample at pos is clipped away.
 bool volren_clipPosition(vec3 pos);
 

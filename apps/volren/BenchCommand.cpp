@@ -16,6 +16,7 @@
 
 #include <volume_model/DefaultScene.h>
 #include <volume_model/Requantise.h>
+#include <volume_model/VolumeNode.h>
 
 #include <osg/GLExtensions>
 #include <osg/LightSource>
@@ -76,7 +77,8 @@ std::vector<BenchConfig> defaultMatrix()
 
 /// What a reference draws, so configurations that draw the same picture share one: each
 /// volume's lighting model as the policy chose it ("lit:blinn_phong", "lit:lambert/lighting_surface",
-/// "unlit") and how it combines with overlapping ones ("unlit added", "unlit maximum").
+/// "unlit"), its spatial weighting ("unlit weightZ=0:0,0.1:1") and how it combines with
+/// overlapping ones ("unlit added", "unlit maximum").
 std::string lightingModel(const ReferenceScene& scene, bool lighting)
 {
     std::string key;
@@ -89,6 +91,13 @@ std::string lightingModel(const ReferenceScene& scene, bool lighting)
         if (lit && placed.shadows == ReferenceScene::Shadows::Exact) model += "+shadows";
         if (lit && placed.occlusion) model += "+occlusion";
         if (lit && placed.shadowsGeometry && scene.occluders) model += "+shadowed geometry";
+        // Its spatial weighting where the renderer applies it (another picture per curve).
+        const auto weighting = placed.choice.find("Weighting");
+        if (weighting != placed.choice.end() && weighting->second != "null")
+            if (const auto* node = dynamic_cast<const VolumeNode*>(placed.node.get()))
+                for (std::size_t axis = 0; axis < 3; ++axis)
+                    if (!node->settings.weighting.axes[axis].identity())
+                        model += std::string(" weight") + "XYZ"[axis] + "=" + node->settings.weighting.axes[axis].text();
         // How it combines with the volumes it overlaps (the same media, other pictures).
         if (placed.blending == ReferenceScene::Blending::Images) model += " added";
         if (placed.blending == ReferenceScene::Blending::Maxima) model += " maximum";

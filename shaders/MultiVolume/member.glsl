@@ -3,12 +3,15 @@
 // member's suffix _v<k> (volren_memberRay becomes volren_memberRay_v0, volren_volume becomes
 // volren_volume_v0, ...), so the members' slots, uniforms and textures are kept apart. Names the
 // set program defines once (common/numerics.glsl, RaySetup/ray.glsl) are shared, not renamed.
+// Every function defined here whose name starts volren_member gets a dispatcher over the members,
+// volren_setMember... with the member's index k first (ProgramAssembly::appendMembers), which the
+// set traversals call.
 // void volren_memberRay(vec3 origin, vec3 dir, out vec3 memberOrigin, out vec3 memberDir,
 //                       out float worldPerT, inout float tNear, inout float tFar)
 // float volren_memberSample(vec3 pos, vec3 memberDir, float worldLength, out vec3 emitted)
 // float volren_memberSkip(vec3 memberOrigin, vec3 memberDir, float t, float tFar, out float tRecheck)
-// bool volren_memberValue(vec3 pos, out float value)
-// vec4 volren_memberClassify(float value)
+// bool volren_memberValue(vec3 pos, out float value, out float weight)
+// vec4 volren_memberClassify(float value, float weight)
 
 // The set's ray in this member's texture space (volren_setToMember: set box -> member texture
 // space), its world length per unit t in the member's local units, and [tNear, tFar] narrowed to
@@ -33,6 +36,7 @@ float volren_memberSample(vec3 pos, vec3 memberDir, float worldLength, out vec3 
     emitted = vec3(0.0);
     if (volren_clipPosition(pos)) return 0.0;
     vec4 c = volren_classify(volren_fetchScalar(pos));
+    c.a *= volren_weight(pos);
     float dTau = volren_opticalDepth(c.a, worldLength / volren_referenceStep);
     if (dTau > 0.0) emitted = volren_shade(pos, -normalize(memberDir * volren_worldSize), c);
     return dTau;
@@ -45,18 +49,22 @@ float volren_memberSkip(vec3 memberOrigin, vec3 memberDir, float t, float tFar, 
     return volren_skip(memberOrigin, memberDir, t, tFar, tRecheck);
 }
 
-// This member's reconstructed scalar at pos; false where it does not count (clipped or NaN).
-bool volren_memberValue(vec3 pos, out float value)
+// This member's reconstructed scalar at pos and its Weighting there; false where it does not
+// count (clipped, NaN, or of weight 0).
+bool volren_memberValue(vec3 pos, out float value, out float weight)
 {
     value = 0.0;
-    if (volren_clipPosition(pos)) return false;
+    weight = volren_clipPosition(pos) ? 0.0 : volren_weight(pos);
+    if (!(weight > 0.0)) return false;
     value = volren_fetchScalar(pos);
     return !isnan(value);
 }
 
-// This member's classification of `value`, premultiplied (unlit, as the projections show it).
-vec4 volren_memberClassify(float value)
+// This member's classification of `value`, its opacity scaled by `weight`, premultiplied (unlit,
+// as the projections show it).
+vec4 volren_memberClassify(float value, float weight)
 {
     vec4 c = volren_classify(value);
+    c.a *= weight;
     return vec4(c.rgb * c.a, c.a);
 }

@@ -43,6 +43,7 @@ vec4 volren_traverse(vec3 origin, vec3 dir, float tNear, float tFar, float jitte
         vec3 p = origin + dir * tMid;
         if (visible && !volren_clipPosition(p)) {
             vec4 c = volren_classify(volren_fetchScalar(p));
+            c.a *= volren_weight(p);  // spatial weighting scales the sample's opacity
             float dTau = volren_opticalDepth(c.a, lenT * m.worldPerT / volren_referenceStep);
             if (dTau > 0.0) {
                 color += exp(-depth) * volren_opacityFromDepth(dTau) * volren_shade(p, viewDir, c);

@@ -15,7 +15,7 @@ float volren_voxelExtinction(ivec3 voxel, ivec3 n)
 {
     vec3 p = (vec3(clamp(voxel, ivec3(0), n - 1)) + 0.5) / vec3(n);
     if (volren_clipPosition(p)) return 0.0;
-    return min(volren_opticalDepth(volren_classify(volren_fetchScalar(p)).a, 1.0) / volren_referenceStep, 60000.0);
+    return min(volren_opticalDepth(volren_classify(volren_fetchScalar(p)).a * volren_weight(p), 1.0) / volren_referenceStep, 60000.0);
 }
 
 void main()

@@ -86,7 +86,7 @@ void main()
             for (int i = 0; i < count; ++i) {
                 vec3 p = pos + dirTex * ((float(i) + 0.5) * h);
                 if (volren_clipPosition(p)) continue;
-                depth += volren_opticalDepth(volren_classify(volren_fetchScalar(p)).a, ratio);
+                depth += volren_opticalDepth(volren_classify(volren_fetchScalar(p)).a * volren_weight(p), ratio);
             }
         }
         transmittance = clamp(incoming, 0.0, 1.0) * exp(-depth);

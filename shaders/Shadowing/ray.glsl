@@ -20,7 +20,7 @@ float volren_shadow(vec3 pos, vec3 lightDir, float lightDistance, int light)
     for (int i = 0; i < count; ++i) {
         vec3 p = pos + dirTex * ((float(i) + 0.5) * h);
         if (volren_clipPosition(p)) continue;
-        depth += volren_opticalDepth(volren_classify(volren_fetchScalar(p)).a, ratio);
+        depth += volren_opticalDepth(volren_classify(volren_fetchScalar(p)).a * volren_weight(p), ratio);
         if (depth >= volren_shadowCutoffDepth) break;
     }
     return exp(-depth) * volren_geometryLight(pos, light);

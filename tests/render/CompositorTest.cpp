@@ -13,6 +13,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <vector>
 
 namespace volren::test {
 namespace {
@@ -114,6 +115,37 @@ TEST(Compositor, ShaderPathOverridesTheInstalledFiles)
     const std::string src = compositor.program(c)->fragmentSource;
     unsetenv("VOLREN_SHADER_PATH");
     EXPECT_NE(src.find("return 0.25;"), std::string::npos);
+}
+
+TEST(Compositor, TheSetTraversalsLoopsOverMembersAreWrittenOutPerMember)
+{
+    // Each loop `for (int k = 0; k < VOLREN_MEMBER_COUNT...)` of MultiVolume/sum_of_media.glsl
+    // becomes one block per member with a constant k (so a dispatcher call reaches one member's
+    // code), and the file's lines after each loop keep their numbers (a #line after it).
+    ShaderCompositor compositor;
+    Composition set;
+    set.choice["RayTraversal"] = "sum_of_media";
+    set.members = {Composition{}, Composition{}, Composition{}};
+    const std::string src = compositor.program(set)->fragmentSource;
+    EXPECT_EQ(src.find("k < VOLREN_MEMBER_COUNT"), std::string::npos);
+    for (int k = 0; k < 3; ++k) EXPECT_NE(src.find("do { const int k = " + std::to_string(k) + ";"), std::string::npos) << k;
+    EXPECT_EQ(src.find("do { const int k = 3;"), std::string::npos);
+    // The file's own lines: each loop's closing line number follows it as a #line.
+    std::ifstream file(std::string(VOLREN_SOURCE_DIR) + "/shaders/MultiVolume/sum_of_media.glsl");
+    std::vector<std::string> lines;
+    for (std::string line; std::getline(file, line);) lines.push_back(line);
+    int loops = 0;
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+        if (lines[i].find("k < VOLREN_MEMBER_COUNT") == std::string::npos) continue;
+        ++loops;
+        const std::string indent = lines[i].substr(0, lines[i].find_first_not_of(' '));
+        std::size_t close = i + 1;
+        while (close < lines.size() && lines[close] != indent + "}") ++close;
+        ASSERT_LT(close, lines.size()) << "loop at line " << i + 1;
+        EXPECT_NE(src.find("} while (false);\n#line " + std::to_string(close + 1) + "\n"), std::string::npos)
+            << "loop at line " << i + 1 << " closing at line " << close + 1;
+    }
+    EXPECT_EQ(loops, 4);
 }
 
 TEST(Compositor, DriverLogLinesAreMappedToShaderFiles)

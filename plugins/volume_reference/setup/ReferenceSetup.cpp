@@ -56,9 +56,7 @@ ReferenceScene referenceScene(VolumeScene& scene)
         const ChosenComposition chosen = scene.policy().choose(node.settings, offer, scene.pass);
         placed.choice = chosen.composition.choice;
         // How it combines with the volumes it overlaps: the set traversal it would be marched by.
-        std::vector<ChosenComposition> alone{chosen};
-        const ShaderFunction* set = ShaderFunctionRegistry::instance().find(
-            "RayTraversal", scene.policy().setComposition(alone).composition.functionFor("RayTraversal"));
+        const ShaderFunction* set = scene.policy().setTraversal({chosen});
         const std::string combines = set ? set->traits.combines : std::string();
         placed.blending = combines == "images"   ? ReferenceScene::Blending::Images
                           : combines == "maxima" ? ReferenceScene::Blending::Maxima

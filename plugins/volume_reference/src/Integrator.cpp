@@ -33,6 +33,7 @@ Medium mediumOf(const ReferenceScene& scene, const ReferenceScene::Placed& place
     m.domainMin = m.tf->domainMin();
     m.domainMax = m.tf->domainMax();
     setShading(m, placed, lightCount > 0);
+    setWeighting(m, placed);
     m.gradientKind = options.gradient;
     // Shadow rays converge like view rays, to a quarter of the tolerance (a transmittance
     // scales a light's whole term), through every clip shape (all apply to every volume).
@@ -228,19 +229,25 @@ glm::dvec4 Integrator::maximum(const Ray& ray, double u0, double u1, double step
     const auto count = std::size_t(std::ceil((end - start) / step));
     const double h = (end - start) / double(count);
     bool found = false;
-    double best = 0.0;
+    double best = 0.0, bestWeight = 0.0;
     for (std::size_t k = 0; k < count; ++k) {
         const glm::dvec3 p = ray.origin + ray.direction * ((start + (double(k) + 0.5) * h) / ray.length);
         const glm::dvec3 tc = toGlm(osg::Vec3d(p.x, p.y, p.z) * m.worldToLocal) / m.size + 0.5;
         if (tc.x < 0 || tc.y < 0 || tc.z < 0 || tc.x > 1 || tc.y > 1 || tc.z > 1 || !kept(p)) continue;
+        const double w = m.weighting(tc.x, tc.y, tc.z);
+        if (!(w > 0.0)) continue;  // weighted out, as clipped
         const double v = m.value(tc);
-        if (std::isnan(v) || (found && !(v > best))) continue;
+        if (std::isnan(v)) continue;
+        if (found && v == best) bestWeight = std::max(bestWeight, w);  // a tie shows as its most weighted sample
+        if (found && !(v > best)) continue;
         best = v;
+        bestWeight = w;
         found = true;
     }
     if (!found) return glm::dvec4(0.0);
     const osg::Vec4 c = m.tf->evaluate(std::clamp(best, m.domainMin, m.domainMax));
-    return glm::dvec4(c.r() * c.a(), c.g() * c.a(), c.b() * c.a(), c.a());
+    const double a = c.a() * bestWeight;  // the opacity scaled by the weighting where the maximum lies
+    return glm::dvec4(c.r() * a, c.g() * a, c.b() * a, a);
 }
 
 glm::dvec4 Integrator::march(const Ray& ray, double u0, double u1, double step, ShadowTally& tally,

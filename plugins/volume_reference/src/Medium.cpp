@@ -69,6 +69,7 @@ bool Medium::classify(const glm::dvec3& tc, osg::Vec4& rgba) const
     const double v = value(tc);
     if (std::isnan(v)) return false;  // NaN voxels are empty
     rgba = tf->evaluate(std::clamp(v, domainMin, domainMax));
+    if (!weighting.identity()) rgba.a() = float(rgba.a() * weighting(tc.x, tc.y, tc.z));
     return !(rgba.a() <= 0.0);
 }
 

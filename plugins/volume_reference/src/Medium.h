@@ -2,6 +2,7 @@
 // Internal to the reference renderer: one volume as the integrator samples it (the trilinear
 // field, its gradients, the transfer function), how its samples are lit and what shadows them.
 #include <volume_model/ClipNode.h>
+#include <volume_model/SpatialWeighting.h>
 #include <volume_reference/ReferenceRenderer.h>
 
 #include <glm/glm.hpp>
@@ -58,6 +59,9 @@ struct Medium
     glm::ivec3 dims;
     double unitLength = 1.0;  ///< Δ0: the smallest voxel spacing; TF alpha is per this length
     double domainMin = 0.0, domainMax = 1.0;
+    /// The factor on each sample's TF opacity by its texture coordinate (Weighting axes; all 1
+    /// for null): classify() applies it, maxima count only samples it weighs above 0.
+    SpatialWeighting weighting;
     Shading shading = Shading::None;
     Illumination illumination = Illumination::None;
     double ambient = 0.0, specular = 0.0, shininess = 1.0, roughness = 1.0, shadingThreshold = 0.0;
@@ -94,8 +98,8 @@ struct Medium
     /// and, when `gradient` is given, its exact gradient per local (world) unit; zero along an
     /// axis where the field is clamped (outside the outermost voxel centres).
     double value(const glm::dvec3& tc, glm::dvec3* gradient = nullptr) const;
-    /// The TF's colour and opacity at `tc`; false where the medium is empty (a NaN value, or
-    /// opacity 0). The view ray's and shadow rays' medium alike.
+    /// The TF's colour and opacity at `tc`, the opacity scaled by the weighting there; false where
+    /// the medium is empty (a NaN value, or opacity 0). The view ray's and shadow rays' medium alike.
     bool classify(const glm::dvec3& tc, osg::Vec4& rgba) const;
     /// Extinction per length unit of a sample of TF opacity `alpha` in (0, 1): -ln(1 - α) / Δ0.
     double extinction(double alpha) const { return -std::log1p(-alpha) / unitLength; }
@@ -127,5 +131,9 @@ struct Medium
 /// reach it: `lit`): Shading, Illumination, and shadows (Placed::shadows, else from Shadowing);
 /// throws std::invalid_argument for a Shading, Illumination or Shadowing it has no model of.
 void setShading(Medium& m, const ReferenceScene::Placed& placed, bool lit);
+/// Sets `m`'s spatial weighting from the volume's Weighting choice (the renderer's; undecided:
+/// the node's weighting unless Weighting is forced null); throws std::invalid_argument for a
+/// Weighting it has no model of.
+void setWeighting(Medium& m, const ReferenceScene::Placed& placed);
 
 }  // namespace volren::reference

@@ -133,4 +133,20 @@ void setShading(Medium& m, const ReferenceScene::Placed& placed, bool lit)
     m.shadingThreshold = s.shadingThreshold;
 }
 
+void setWeighting(Medium& m, const ReferenceScene::Placed& placed)
+{
+    const auto& node = static_cast<const VolumeNode&>(*placed.node);
+    const RenderSettings& s = node.settings;
+    const std::string weighting = !placed.choice.empty() ? choiceOf(placed, s, "Weighting")
+                                  : s.forceNull.count("Weighting") || s.weighting.identity()
+                                      ? "null"
+                                      : s.functions.count("Weighting") ? s.functions.at("Weighting")
+                                                                       : "axes";
+    if (weighting == "null") m.weighting = {};
+    else if (weighting == "axes") m.weighting = s.weighting;
+    else
+        throw std::invalid_argument("reference: no model for Weighting '" + weighting + "' (volume '" + node.getName() +
+                                    "')");
+}
+
 }  // namespace volren::reference

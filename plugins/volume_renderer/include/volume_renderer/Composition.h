@@ -1,4 +1,5 @@
 #pragma once
+#include <array>
 #include <map>
 #include <string>
 #include <vector>
@@ -12,12 +13,14 @@ struct Composition
     std::map<std::string, std::string> choice;                  ///< slot -> implementation
     std::map<std::string, std::vector<std::string>> instances;  ///< template slot -> one per shape
     unsigned int lightCount = 0;                                ///< lights the shading loops over
+    /// Weighting/axes: per axis, the vec4s of curve segments (four each) the program evaluates.
+    std::array<unsigned int, 3> weightGroups = {0, 0, 0};
     /// A multi-volume set: one composition per member (their sample slots, clip planes and
     /// lights), marched along one ray by this composition's RayTraversal (`sum_of_media`).
     std::vector<Composition> members;
 
-    /// Full key "Slot=impl;...;ClipPosition=[box,plane];lights=N;" over every slot, defaults
-    /// filled in; programs are cached by the whole key.
+    /// Full key "Slot=impl;...;ClipPosition=[box,plane];lights=N;[weightGroups=X,Y,Z;]" over
+    /// every slot, defaults filled in; programs are cached by the whole key.
     std::string key() const;
     /// Implementation for ordinary `slot` (CompositionPolicy::defaultImplementation when not chosen).
     std::string functionFor(const std::string& slot) const;

@@ -126,15 +126,18 @@ public:
     /// The registry the implementations come from.
     const ShaderFunctionRegistry& registry() const { return _registry; }
 
+    /// The multi-volume traversal setComposition() gives `members` (null: none marches their
+    /// kind); for one volume, the set traversal it is marched by where it shares a ray.
+    const ShaderFunction* setTraversal(const std::vector<ChosenComposition>& members) const;
+
 private:
     Composition bare(const std::string& setup) const;
-    /// The multi-volume traversal setComposition() gives `members` (null: none marches their kind).
-    const ShaderFunction* setTraversal(const std::vector<ChosenComposition>& members) const;
     std::string implementationForKind(const std::string& slot, const std::string& kind) const;
     void chooseLighting(ChosenComposition& out, const RenderSettings& settings, const SceneOffer& offer,
                         const PassSettings& pass) const;
     void chooseClips(ChosenComposition& out, const RenderSettings& settings, const SceneOffer& offer,
                      const PassSettings& pass) const;
+    void chooseWeighting(ChosenComposition& out, const RenderSettings& settings, const PassSettings& pass) const;
     bool skippingFits(const Composition& c, const ShaderFunction& acceleration) const;
 
     struct Rules;

@@ -66,6 +66,7 @@ void registerGradientInputFunctions(ShaderFunctionRegistry& registry);
 void registerIlluminationFunctions(ShaderFunctionRegistry& registry);
 void registerShadowingFunctions(ShaderFunctionRegistry& registry);
 void registerAccelerationFunctions(ShaderFunctionRegistry& registry);
+void registerWeightingFunctions(ShaderFunctionRegistry& registry);
 /// The set traversal (RayTraversal "sum_of_media") and per-member glue (MultiVolume "member")
 /// of multi-volume set programs.
 void registerMultiVolumeFunctions(ShaderFunctionRegistry& registry);

@@ -4,8 +4,11 @@
 #include <volume_model/ClipNode.h>
 #include <volume_model/RenderSettings.h>
 
+#include <osg/Notify>
+
 #include <algorithm>
 #include <cctype>
+#include <mutex>
 #include <set>
 
 namespace volren {
@@ -66,7 +69,7 @@ std::string CompositionPolicy::defaultImplementation(const std::string& slot)
 std::string CompositionPolicy::neededImplementation(const std::string& slot)
 {
     static const std::map<std::string, std::string> needed = {
-        {"Illumination", "blinn_phong"}, {"Shading", "lighting"}, {"Gradient", "central"}};
+        {"Illumination", "blinn_phong"}, {"Shading", "lighting"}, {"Gradient", "central"}, {"Weighting", "axes"}};
     auto it = needed.find(slot);
     return it == needed.end() ? defaultImplementation(slot) : it->second;
 }
@@ -109,6 +112,7 @@ ChosenComposition CompositionPolicy::choose(const RenderSettings& settings, cons
         if (!slot.isTemplate && !out.composition.choice.count(slot.name))
             out.composition.choice[slot.name] = wish.chosen(slot.name, defaultImplementation(slot.name));
     chooseClips(out, settings, offer, pass);
+    chooseWeighting(out, settings, pass);
     if (out.composition.functionFor("Reconstruction") == none && wish.named("VolumeStorage").empty())
         out.composition.choice["VolumeStorage"] = none;  // nothing reads voxels
     else if (offer.exceedsTextureBudget && wish.named("VolumeStorage").empty())
@@ -185,6 +189,39 @@ void CompositionPolicy::chooseLighting(ChosenComposition& out, const RenderSetti
     const LightUse use = shader ? lightUseOf(*shader) : LightUse::Optional;
     c.lightCount = use == LightUse::Optional || (use == LightUse::Required && illumination != none) ? lights : 0;
     if (shading == none) c.lightCount = 0;
+}
+
+void CompositionPolicy::chooseWeighting(ChosenComposition& out, const RenderSettings& settings,
+                                        const PassSettings& pass) const
+{
+    // The node's spatial weighting wherever a chosen implementation weighs its samples by it.
+    const Wishes wish{settings, pass};
+    Composition& c = out.composition;
+    if (wish.named("Weighting").empty() && !settings.weighting.identity()) {
+        bool weighs = false;
+        for (const char* slot : {"RayTraversal", "Shadowing"})
+            if (const ShaderFunction* f = _registry.find(slot, c.functionFor(slot));
+                f && f->traits.calls && f->mayCall("Weighting"))
+                weighs = true;
+        if (weighs) {
+            c.choice["Weighting"] = neededImplementation("Weighting");
+        } else {
+            static std::mutex told;  // once per traversal: the policy runs every cull
+            static std::set<std::string> traversals;
+            const std::lock_guard<std::mutex> lock(told);
+            if (traversals.insert(c.functionFor("RayTraversal")).second)
+                OSG_NOTICE << "volren: RayTraversal " << c.functionFor("RayTraversal")
+                           << " does not weigh its samples: the spatial weighting (weightX/Y/Z) is not applied"
+                           << std::endl;
+        }
+    }
+    // Weighting/axes evaluates only the segments the curves have, compiled in (a driver that runs
+    // a branch's both sides pays for every segment it could have, as much as the sample itself).
+    if (c.functionFor("Weighting") == "axes")
+        for (std::size_t axis = 0; axis < 3; ++axis) {
+            const std::size_t knots = settings.weighting.axes[axis].knots.size();
+            c.weightGroups[axis] = knots > 1 ? unsigned((knots - 2) / 4 + 1) : 0u;
+        }
 }
 
 void CompositionPolicy::chooseClips(ChosenComposition& out, const RenderSettings& settings, const SceneOffer& offer,

@@ -2,6 +2,7 @@
 
 #include <volume_renderer/Slots.h>
 
+#include <algorithm>
 #include <map>
 #include <regex>
 #include <stdexcept>
@@ -37,7 +38,7 @@ std::set<std::string> definedNames(const std::string& text)
 /// per-composition macros (VOLREN_LIGHT_COUNT, VOLREN_LIGHT_ARRAY) too.
 std::string renameForMember(const std::string& text, const std::set<std::string>& shared, const std::string& suffix)
 {
-    static const std::regex name(R"(\b(volren_\w+|VOLREN_LIGHT_COUNT|VOLREN_LIGHT_ARRAY)\b)");
+    static const std::regex name(R"(\b(volren_\w+|VOLREN_LIGHT_COUNT|VOLREN_LIGHT_ARRAY|VOLREN_WEIGHT_GROUPS_[XYZ])\b)");
     std::string out;
     auto last = text.cbegin();
     for (auto it = std::sregex_iterator(text.begin(), text.end(), name); it != std::sregex_iterator(); ++it) {
@@ -51,6 +52,45 @@ std::string renameForMember(const std::string& text, const std::set<std::string>
 }
 
 const char* const glslVersion = "#version 430 core\n";
+
+/// The set traversal's loops over members, `for (int k = 0; k < VOLREN_MEMBER_COUNT[ && C]; ++k)
+/// { body }`, written out once per member: `do { const int k = <n>; [if (!(C)) break;] body }
+/// while (false);` (a `continue` in the body ends that member's pass, as in the loop). A member's
+/// dispatchers then see a constant k and call it alone: GPUs that run both sides of a branch
+/// under a mask (llvmpipe) would otherwise pay every member's code for each call. C must stay
+/// false once it is false (it is checked before each member); a `break` in the body is refused.
+std::string unrollMemberLoops(const std::string& text, std::size_t members)
+{
+    static const std::regex header(
+        R"(for\s*\(\s*int\s+k\s*=\s*0\s*;\s*k\s*<\s*VOLREN_MEMBER_COUNT\s*(?:&&\s*([^;]+?))?\s*;\s*\+\+k\s*\)\s*\{)");
+    static const std::regex breaks(R"(\bbreak\b)");
+    std::string out;
+    std::size_t from = 0;
+    for (std::smatch m; std::regex_search(text.cbegin() + std::ptrdiff_t(from), text.cend(), m, header);) {
+        const std::size_t start = from + std::size_t(m.position());
+        const std::size_t open = start + std::size_t(m.length()) - 1;
+        std::size_t close = open;
+        for (int depth = 0; close < text.size(); ++close) {
+            depth += text[close] == '{' ? 1 : text[close] == '}' ? -1 : 0;
+            if (depth == 0) break;
+        }
+        if (close >= text.size()) throw std::runtime_error("a loop over the members has no closing brace");
+        const std::string body = text.substr(open + 1, close - open - 1);
+        if (std::regex_search(body, breaks))
+            throw std::runtime_error("a loop over the members has a break (written out per member, it would end one "
+                                     "member's pass only)");
+        const std::string condition = m[1].matched ? m[1].str() : std::string();
+        out.append(text, from, start - from);
+        for (std::size_t k = 0; k < members; ++k)
+            out += "do { const int k = " + std::to_string(k) + ";" +
+                   (condition.empty() ? std::string() : " if (!(" + condition + ")) break;") + body + "} while (false);";
+        // What follows keeps its line numbers (compile errors name the file's own lines).
+        out += "\n#line " + std::to_string(1 + std::count(text.begin(), text.begin() + std::ptrdiff_t(close), '\n')) + "\n";
+        from = close + 1;
+    }
+    out.append(text, from, std::string::npos);
+    return out;
+}
 
 }  // namespace
 
@@ -132,11 +172,17 @@ std::string ProgramAssembly::header() const
     src << "// volren composed ray caster: " << _result.key << "\n";
     src << "#define VOLREN_LIGHT_COUNT " << _composition.lightCount << "\n";
     src << "#define VOLREN_LIGHT_ARRAY " << std::max(1u, _composition.lightCount) << "\n";
+    auto weightGroups = [&src](const Composition& c, const std::string& suffix) {
+        for (std::size_t axis = 0; axis < 3; ++axis)
+            src << "#define VOLREN_WEIGHT_GROUPS_" << "XYZ"[axis] << suffix << " " << c.weightGroups[axis] << "\n";
+    };
+    weightGroups(_composition, "");
     if (!_composition.members.empty()) src << "#define VOLREN_MEMBER_COUNT " << _composition.members.size() << "\n";
     for (std::size_t k = 0; k < _composition.members.size(); ++k) {
         const unsigned int lights = _composition.members[k].lightCount;
         src << "#define VOLREN_LIGHT_COUNT_v" << k << " " << lights << "\n";
         src << "#define VOLREN_LIGHT_ARRAY_v" << k << " " << std::max(1u, lights) << "\n";
+        weightGroups(_composition.members[k], "_v" + std::to_string(k));
     }
     return src.str();
 }
@@ -210,37 +256,51 @@ std::pair<std::string, std::string> ProgramAssembly::templateSources(const SlotI
 void ProgramAssembly::appendMembers(const std::string& numerics, const std::string& slotDeclarations)
 {
     // Each member's slots, prototypes and glue, renamed apart by its suffix except for what the
-    // set defines once; then dispatchers over the members.
+    // set defines once; then, for every function the glue defines, a dispatcher over the members.
     std::set<std::string> shared = definedNames(numerics);
     for (const std::string& n : definedNames(file("RaySetup/ray.glsl"))) shared.insert(n);
     const ShaderFunction* glue = lookup("MultiVolume", "member");
-    std::string rays, samples, skips, values, classes;
+    const std::string glueSource = source(glue);
     for (std::size_t k = 0; k < _composition.members.size(); ++k) {
         const std::string suffix = "_v" + std::to_string(k);
         const std::string of = " (member " + std::to_string(k) + ")";
         append("slots.glsl" + of, renameForMember(slotDeclarations, shared, suffix));
         for (const auto& [name, text] : slotSources(int(k))) append(name + of, renameForMember(text, shared, suffix));
-        append(glue->file + of, renameForMember(source(glue), shared, suffix));
-        const std::string branch = std::string(k ? "    else if" : "    if") + " (k == " + std::to_string(k) + ")";
-        rays += branch + " volren_memberRay" + suffix + "(origin, dir, memberOrigin, memberDir, worldPerT, tNear, tFar);\n";
-        samples += branch + " return volren_memberSample" + suffix + "(pos, memberDir, worldLength, emitted);\n";
-        skips += branch + " return volren_memberSkip" + suffix + "(memberOrigin, memberDir, t, tFar, tRecheck);\n";
-        values += branch + " return volren_memberValue" + suffix + "(pos, value);\n";
-        classes += branch + " return volren_memberClassify" + suffix + "(value);\n";
+        append(glue->file + of, renameForMember(glueSource, shared, suffix));
     }
     append("<MultiVolume dispatchers over " + std::to_string(_composition.members.size()) + " members>",
-           "void volren_setMemberRay(int k, vec3 origin, vec3 dir, out vec3 memberOrigin, out vec3 memberDir,\n"
-           "                         out float worldPerT, inout float tNear, inout float tFar)\n{\n"
-           "    memberOrigin = vec3(0.0);\n    memberDir = vec3(0.0);\n    worldPerT = 0.0;\n" +
-               rays +
-               "}\n"
-               "float volren_setMemberSample(int k, vec3 pos, vec3 memberDir, float worldLength, out vec3 emitted)\n{\n" +
-               samples + "    emitted = vec3(0.0);\n    return 0.0;\n}\n"
-               "float volren_setMemberSkip(int k, vec3 memberOrigin, vec3 memberDir, float t, float tFar, out float tRecheck)\n{\n" +
-               skips + "    tRecheck = 1e30;\n    return t;\n}\n"
-               "bool volren_setMemberValue(int k, vec3 pos, out float value)\n{\n" + values +
-               "    value = 0.0;\n    return false;\n}\n"
-               "vec4 volren_setMemberClassify(int k, float value)\n{\n" + classes + "    return vec4(0.0);\n}\n");
+           memberDispatchers(glueSource));
+}
+
+std::string ProgramAssembly::memberDispatchers(const std::string& glue) const
+{
+    // `T volren_memberX(params)` defined by the glue -> `T volren_setMemberX(int k, params)`
+    // calling member k's copy; an index out of range returns T's zero.
+    static const std::regex definition(
+        R"((?:^|\n)(void|float|bool|int|vec[234])\s+volren_member(\w+)\s*\(([^)]*)\)\s*\{)");
+    static const std::regex parameterName(R"((\w+)\s*$)");
+    std::string out;
+    for (auto it = std::sregex_iterator(glue.begin(), glue.end(), definition); it != std::sregex_iterator(); ++it) {
+        const std::string type = (*it)[1], name = (*it)[2], parameters = (*it)[3];
+        std::string arguments;
+        std::stringstream list(parameters);
+        for (std::string parameter; std::getline(list, parameter, ',');) {
+            std::smatch m;
+            if (!std::regex_search(parameter, m, parameterName))
+                throw std::runtime_error("MultiVolume/member: cannot read parameter '" + parameter + "' of volren_member" + name);
+            arguments += (arguments.empty() ? "" : ", ") + m[1].str();
+        }
+        out += type + " volren_setMember" + name + "(int k" + (parameters.find_first_not_of(" \n") == std::string::npos ? "" : ", " + parameters) +
+               ")\n{\n";
+        for (std::size_t k = 0; k < _composition.members.size(); ++k)
+            out += std::string(k ? "    else if" : "    if") + " (k == " + std::to_string(k) + ") " +
+                   (type == "void" ? "" : "return ") + "volren_member" + name + "_v" + std::to_string(k) + "(" +
+                   arguments + ");\n";
+        if (type == "bool") out += "    return false;\n";
+        else if (type != "void") out += "    return " + type + "(0);\n";
+        out += "}\n";
+    }
+    return out;
 }
 
 void ProgramAssembly::assembleBuild(const std::string& declarations, const std::string& numerics,
@@ -253,7 +313,8 @@ void ProgramAssembly::assembleBuild(const std::string& declarations, const std::
     for (const Binding& b : _result.bindings)
         if (b.member < 0 && !b.function->buildFile.empty()) builder = b.function;
     if (!builder) return;
-    static const std::set<std::string> sampling = {"VolumeStorage", "Reconstruction", "Classification", "ClipPosition"};
+    static const std::set<std::string> sampling = {"VolumeStorage", "Reconstruction", "Classification", "ClipPosition",
+                                                  "Weighting"};
     std::ostringstream src;
     auto add = [&](const std::string& name, const std::string& text) {
         const int index = int(_result.buildSourceNames.size());
@@ -288,7 +349,17 @@ const ShaderFunction* ProgramAssembly::assemble()
     const std::string slotDeclarations = file("slots.glsl");
     append("common/numerics.glsl", numerics);
     append("slots.glsl", slotDeclarations);
-    for (const auto& [name, text] : slotSources(-1)) append(name, text);
+    for (const auto& [name, text] : slotSources(-1)) {
+        if (_composition.members.empty()) {
+            append(name, text);
+            continue;
+        }
+        try {
+            append(name, unrollMemberLoops(text, _composition.members.size()));
+        } catch (const std::exception& e) {
+            throw std::runtime_error(name + ": " + e.what());
+        }
+    }
     if (!_composition.members.empty()) appendMembers(numerics, slotDeclarations);
     _result.fragmentSource = _src.str();
     assembleBuild(decls, numerics, slotDeclarations);

@@ -36,6 +36,9 @@ private:
     std::pair<std::string, std::string> templateSources(const SlotInfo& slot, const std::vector<const Binding*>& mine,
                                                         Sources& out) const;
     void appendMembers(const std::string& numerics, const std::string& slotDeclarations);
+    /// For each function `volren_memberX` the member glue source defines, `volren_setMemberX`
+    /// with the member index first, calling that member's copy.
+    std::string memberDispatchers(const std::string& glue) const;
     void assembleBuild(const std::string& declarations, const std::string& numerics, const std::string& slotDeclarations);
 
     const ShaderFunctionRegistry& _registry;

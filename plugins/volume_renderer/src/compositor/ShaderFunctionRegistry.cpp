@@ -44,6 +44,7 @@ void ShaderFunctionRegistry::addBuiltins()
     registerIlluminationFunctions(*this);
     registerShadowingFunctions(*this);
     registerAccelerationFunctions(*this);
+    registerWeightingFunctions(*this);
     registerMultiVolumeFunctions(*this);
 }
 

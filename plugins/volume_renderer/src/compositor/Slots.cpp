@@ -21,6 +21,7 @@ const std::vector<SlotInfo>& slots()
          .join = " || ",
          .wrap = "    return {calls};\n",
          .empty = "    return false;\n"},
+        {.name = "Weighting", .function = "volren_weight"},
         {.name = "Acceleration", .function = "volren_skip"},  // per member of a set: each skips its own medium
         {.name = "Jitter", .function = "volren_jitter", .perSet = true},
         {.name = "ClipRay",

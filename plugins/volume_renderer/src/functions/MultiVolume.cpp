@@ -12,7 +12,7 @@ void registerMultiVolumeFunctions(ShaderFunctionRegistry& registry)
                   .uniforms = {{"volren_setToMember", "mat4", ""}},
                   .bind = [](BindContext& c) { c.uniform("volren_setToMember", osg::Matrixf(c.setToMember)); },
                   .traits = {.calls = SlotList{"Reconstruction", "Classification", "ClipPosition", "ClipRay", "Shading",
-                                               "Acceleration"},
+                                               "Acceleration", "Weighting"},
                              .multiVolume = true}});
 }
 

@@ -66,21 +66,25 @@ void registerRayTraversalFunctions(ShaderFunctionRegistry& registry)
 {
     registry.add({.slot = "RayTraversal", .name = "null", .traits = {.calls = SlotList{}}});
 
-    // The compositing traversals leap over what the Acceleration proves transparent.
+    // The compositing traversals leap over what the Acceleration proves transparent; their
+    // samples' opacities are scaled by the Weighting.
     const SlotList skipping = {"Reconstruction", "Classification", "ClipPosition", "Shading", "Acceleration"};
-    ShaderFunction frontToBack = traversal("dvr_front_to_back", skipping);
+    const SlotList weighted = {"Reconstruction", "Classification", "ClipPosition", "Shading", "Acceleration", "Weighting"};
+    ShaderFunction frontToBack = traversal("dvr_front_to_back", weighted);
     frontToBack.traits.sharesRayAs = "emission_absorption";
     frontToBack.traits.aliases = {"dvr"};
     frontToBack.traits.skips = "opacity";
     registry.add(frontToBack);
-    ShaderFunction backToFront = traversal("dvr_back_to_front", skipping);
+    ShaderFunction backToFront = traversal("dvr_back_to_front", weighted);
     backToFront.traits.sharesRayAs = "emission_absorption";
     backToFront.traits.skips = "opacity";
     registry.add(backToFront);
 
-    // The projections never shade; MIP and MinIP leap over what cannot pass their running extremum.
+    // The projections never shade; MIP and MinIP leap over what cannot pass their running extremum
+    // and scale the opacity of the extremum by the Weighting there (samples of weight 0 do not count).
     for (const char* name : {"mip", "minip"}) {
-        ShaderFunction extremum = traversal(name, {"Reconstruction", "Classification", "ClipPosition", "Acceleration"});
+        ShaderFunction extremum =
+            traversal(name, {"Reconstruction", "Classification", "ClipPosition", "Acceleration", "Weighting"});
         extremum.includes.push_back("RayTraversal/extremum.glsl");
         extremum.traits.skips = "extremum";
         extremum.traits.skipsByDefault = std::string(name) == "minip";  // docs/bench/skipping.md

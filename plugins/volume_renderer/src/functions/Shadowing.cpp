@@ -91,7 +91,7 @@ void registerShadowingFunctions(ShaderFunctionRegistry& registry)
                           const double cutoff = c.settings.shadowCutoff;
                           c.uniform("volren_shadowCutoffDepth", float(cutoff > 0.0 ? -std::log(cutoff) : 1e30));
                       },
-                  .traits = {.calls = SlotList{"Reconstruction", "Classification", "ClipPosition"},
+                  .traits = {.calls = SlotList{"Reconstruction", "Classification", "ClipPosition", "Weighting"},
                              .clipsPerSample = true,
                              .shadows = true,
                              .aliases = {"shadowray", "shadow_ray", "rays"}}});
@@ -117,7 +117,7 @@ void registerShadowingFunctions(ShaderFunctionRegistry& registry)
                           c.uniform("volren_referenceStep", float(c.volume.minSpacing()));
                           c.texture("volren_lightVolume", c.aux.at(AuxData::LightVolume).get());
                       },
-                  .traits = {.calls = SlotList{"Reconstruction", "Classification", "ClipPosition"},
+                  .traits = {.calls = SlotList{"Reconstruction", "Classification", "ClipPosition", "Weighting"},
                              .clipsPerSample = true,
                              .shadows = true,
                              .shadowsGeometry = true,
@@ -165,7 +165,7 @@ void registerShadowingFunctions(ShaderFunctionRegistry& registry)
                       .textures = {{"volren_opacityMips", "sampler3D"}, geometryShadowTexture},
                       .needs = {AuxData::OpacityMipChain, AuxData::GeometryShadowMap},
                       .bind = bindCone,
-                      .traits = {.calls = SlotList{"Reconstruction", "Classification", "ClipPosition"},
+                      .traits = {.calls = SlotList{"Reconstruction", "Classification", "ClipPosition", "Weighting"},
                                  .clipsPerSample = true,
                                  .shadows = true,
                                  .occlusion = std::string(name) == "cone_ao",

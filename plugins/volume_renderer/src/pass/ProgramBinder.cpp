@@ -110,12 +110,12 @@ std::optional<BrickHidingRule> hidingFor(const BindContext& context, const std::
 /// build program, the volume's and the TF's identity and modified counts, the level, resident
 /// bricks, the lights where the kind reads them, and the values of the uniforms and the
 /// textures of the implementations its program composes (storage, reconstruction,
-/// classification, clip shapes, shadowing) but its own.
+/// classification, clip shapes, weighting, shadowing) but its own.
 std::string builtVolumeKey(const BindContext& context, const std::vector<const Binding*>& bindings,
                            const BuiltVolumeKind& kind, const osg::Program* program)
 {
     static const std::set<std::string> read = {"VolumeStorage", "Reconstruction", "Classification", "ClipPosition",
-                                               "Shadowing"};
+                                               "Weighting", "Shadowing"};
     std::string key;
     key.reserve(256);
     auto put = [&key](const auto& value) { key.append(reinterpret_cast<const char*>(&value), sizeof(value)); };

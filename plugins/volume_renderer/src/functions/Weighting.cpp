@@ -1,0 +1,51 @@
+// Weighting implementations: a factor on each sample's opacity by its position in the volume.
+#include <volume_renderer/ShaderFunctionRegistry.h>
+
+#include <volume_model/RenderSettings.h>
+
+#include <algorithm>
+
+namespace volren {
+
+void registerWeightingFunctions(ShaderFunctionRegistry& registry)
+{
+    registry.add({.slot = "Weighting", .name = "null", .traits = {.calls = SlotList{}}});
+
+    // The node's RenderSettings::weighting as hinges (Weighting/axes.glsl): up to
+    // WeightCurve::maxKnots - 1 (15) segments per axis, four per vec4.
+    static_assert(WeightCurve::maxKnots <= 17, "Weighting/axes.glsl holds 16 segments per axis");
+    ShaderFunction axes{.slot = "Weighting",
+                        .name = "axes",
+                        .uniforms = {{"volren_weightStart", "vec4", "12"},
+                                     {"volren_weightLength", "vec4", "12"},
+                                     {"volren_weightSlope", "vec4", "12"},
+                                     {"volren_weightBase", "vec3", ""}},
+                        .traits = {.calls = SlotList{}}};
+    axes.bind = [](BindContext& c) {
+        const SpatialWeighting& weighting = c.settings.weighting;
+        osg::Vec3f base;
+        for (unsigned int axis = 0; axis < 3; ++axis) {
+            const auto& knots = weighting.axes[axis].knots;
+            base[axis] = knots.empty() ? 1.0f : float(knots.front().second);
+            for (unsigned int quad = 0; quad < 4; ++quad) {
+                osg::Vec4f start, length, slope;  // unused segments: all 0
+                for (unsigned int j = 0; j < 4; ++j) {
+                    const std::size_t i = 4 * quad + j;
+                    if (i + 1 >= knots.size()) continue;
+                    // A step (knots closer than any sample can tell) rises over 1e-6, so its slope stays finite.
+                    const double du = std::max(knots[i + 1].first - knots[i].first, 1e-6);
+                    start[j] = float(knots[i].first);
+                    length[j] = float(du);
+                    slope[j] = float((knots[i + 1].second - knots[i].second) / du);
+                }
+                c.uniformElement("volren_weightStart", 12, 4 * axis + quad, start);
+                c.uniformElement("volren_weightLength", 12, 4 * axis + quad, length);
+                c.uniformElement("volren_weightSlope", 12, 4 * axis + quad, slope);
+            }
+        }
+        c.uniform("volren_weightBase", base);
+    };
+    registry.add(axes);
+}
+
+}  // namespace volren
