@@ -2,8 +2,10 @@
 #include <volume_renderer/Slots.h>
 
 #include <algorithm>
+#include <functional>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 
 namespace volren {
 
@@ -78,16 +80,58 @@ PermutationSpace::PermutationSpace(const ShaderFunctionRegistry& registry, unsig
     for (unsigned int n = 0; n <= maxLights; ++n) lights.values.push_back(std::to_string(n));
     _factors.push_back(lights);
 
-    // Odometer over all factors; keep the valid ones.
+    // Only compositions in which every slot nothing calls is null can be valid, so instead of
+    // checking the whole cross product (hundreds of millions of candidates), the slots are
+    // decided in the order the calls reach them: a reached slot takes each of its values in turn
+    // (adding what they call), and once no undecided slot is reached the rest are null. Every
+    // candidate is then checked by the policy, and the valid ones are sorted into the cross
+    // product's order (the first factor fastest), so an index names the same composition as an
+    // odometer over all factors would.
+    const std::size_t slotCount = functions.size();
+    std::vector<std::vector<std::uint32_t>> calls(slotCount);  // per factor value: the slots it calls
+    std::vector<int> nullValue(slotCount, -1);                   // the value that is no implementation
+    for (std::size_t i = 0; i < slotCount; ++i)
+        for (std::size_t v = 0; v < functions[i].size(); ++v) {
+            std::uint32_t mask = 0;
+            for (const ShaderFunction* f : functions[i][v])
+                for (std::size_t j = 0; j < slotCount; ++j)
+                    if (f->mayCall(slots()[j].name)) mask |= std::uint32_t(1) << j;
+            calls[i].push_back(mask);
+            const bool none = slots()[i].isTemplate ? functions[i][v].empty() : _factors[i].values[v] == "null";
+            if (none) nullValue[i] = int(v);
+        }
+    if (slotCount > 32) throw std::logic_error("PermutationSpace: more slots than a mask holds");
     std::vector<std::uint8_t> choice(_factors.size(), 0);
-    SlotFunctions chosen(functions.size());
-    while (true) {
-        for (std::size_t i = 0; i < functions.size(); ++i) chosen[i] = functions[i][choice[i]];
-        if (_policy.isValid(chosen, unsigned(choice.back()))) _valid.push_back(choice);
-        std::size_t i = 0;
-        while (i < choice.size() && ++choice[i] == _factors[i].values.size()) choice[i++] = 0;
-        if (i == choice.size()) break;
-    }
+    SlotFunctions chosen(slotCount);
+    const std::size_t setup = std::size_t(std::find_if(slots().begin(), slots().end(), [](const SlotInfo& s) {
+                                                           return s.name == "RaySetup";
+                                                       }) -
+                                          slots().begin());
+    std::function<void(std::uint32_t, std::uint32_t)> decide = [&](std::uint32_t decided, std::uint32_t reached) {
+        const std::uint32_t open = reached & ~decided;
+        if (open) {
+            const std::size_t i = std::size_t(__builtin_ctz(open));
+            for (std::size_t v = 0; v < functions[i].size(); ++v) {
+                choice[i] = std::uint8_t(v);
+                decide(decided | std::uint32_t(1) << i, reached | calls[i][v]);
+            }
+            return;
+        }
+        for (std::size_t i = 0; i < slotCount; ++i)
+            if (!(decided & std::uint32_t(1) << i)) {
+                if (nullValue[i] < 0) return;  // a slot nothing calls must be null
+                choice[i] = std::uint8_t(nullValue[i]);
+            }
+        for (std::size_t i = 0; i < slotCount; ++i) chosen[i] = functions[i][choice[i]];
+        for (std::size_t n = 0; n < _factors.back().values.size(); ++n) {
+            choice.back() = std::uint8_t(n);
+            if (_policy.isValid(chosen, unsigned(n))) _valid.push_back(choice);
+        }
+    };
+    decide(0, std::uint32_t(1) << setup);
+    std::sort(_valid.begin(), _valid.end(), [](const std::vector<std::uint8_t>& a, const std::vector<std::uint8_t>& b) {
+        return std::lexicographical_compare(a.rbegin(), a.rend(), b.rbegin(), b.rend());
+    });
 }
 
 Composition PermutationSpace::compose(const std::vector<std::uint8_t>& choice) const
@@ -110,7 +154,10 @@ Composition PermutationSpace::at(std::size_t index) const
 
 std::vector<std::size_t> PermutationSpace::pairwiseCover() const
 {
-    // Greedy: repeatedly take the valid composition that covers the most uncovered pairs.
+    // Greedy: repeatedly take the candidate that covers the most uncovered pairs (the first such).
+    // The candidates are, for each pair, the first composition holding it (so every pair can be
+    // covered) and an even sample of the space (so the greedy has good choices): scanning every
+    // valid composition for every choice took minutes once the space held tens of millions.
     const std::size_t n = _factors.size();
     std::vector<std::size_t> offset(n + 1, 0);
     for (std::size_t i = 0; i < n; ++i) offset[i + 1] = offset[i] + _factors[i].values.size();
@@ -118,17 +165,28 @@ std::vector<std::size_t> PermutationSpace::pairwiseCover() const
     auto pairIndex = [&](std::size_t i, std::uint8_t a, std::size_t j, std::uint8_t b) {
         return (offset[i] + a) * values + offset[j] + b;
     };
-    std::vector<char> needed(values * values, 0), covered(values * values, 0);
-    for (const auto& v : _valid)
+    constexpr std::size_t none = ~std::size_t(0);
+    std::vector<std::size_t> witness(values * values, none);
+    for (std::size_t k = 0; k < _valid.size(); ++k)
         for (std::size_t i = 0; i < n; ++i)
-            for (std::size_t j = i + 1; j < n; ++j) needed[pairIndex(i, v[i], j, v[j])] = 1;
+            for (std::size_t j = i + 1; j < n; ++j) {
+                std::size_t& w = witness[pairIndex(i, _valid[k][i], j, _valid[k][j])];
+                if (w == none) w = k;
+            }
+    std::vector<std::size_t> candidates;
     std::size_t remaining = 0;
-    for (char c : needed) remaining += c;
+    for (std::size_t w : witness)
+        if (w != none) candidates.push_back(w), ++remaining;
+    const std::size_t stride = std::max<std::size_t>(1, _valid.size() / 100000);
+    for (std::size_t k = 0; k < _valid.size(); k += stride) candidates.push_back(k);
+    std::sort(candidates.begin(), candidates.end());
+    candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
 
+    std::vector<char> covered(values * values, 0);
     std::vector<std::size_t> chosen;
     while (remaining > 0) {
         std::size_t best = 0, bestGain = 0;
-        for (std::size_t k = 0; k < _valid.size(); ++k) {
+        for (std::size_t k : candidates) {
             const auto& v = _valid[k];
             std::size_t gain = 0;
             for (std::size_t i = 0; i < n; ++i)
