@@ -71,6 +71,7 @@ std::vector<BenchConfig> defaultMatrix()
     add("volumestorage", {"bricked"});  // the cost of the page table lookup when a volume is bricked
     add("jitter", {"null", "texture"});
     add("classification", {"premultiplied"});
+    add("weightZ", {"ramp:0.1"});  // spatial weighting: the cost of the weights at every sample
     for (const char* p : {"8bit", "16bit", "float"}) m.push_back({std::string("precision=") + p, {}, p});
     return m;
 }

@@ -1,4 +1,5 @@
 #include "ProgramAssembly.h"
+#include "BuildSlots.h"
 
 #include <volume_renderer/Slots.h>
 
@@ -313,8 +314,6 @@ void ProgramAssembly::assembleBuild(const std::string& declarations, const std::
     for (const Binding& b : _result.bindings)
         if (b.member < 0 && !b.function->buildFile.empty()) builder = b.function;
     if (!builder) return;
-    static const std::set<std::string> sampling = {"VolumeStorage", "Reconstruction", "Classification", "ClipPosition",
-                                                  "Weighting"};
     std::ostringstream src;
     auto add = [&](const std::string& name, const std::string& text) {
         const int index = int(_result.buildSourceNames.size());
@@ -326,7 +325,7 @@ void ProgramAssembly::assembleBuild(const std::string& declarations, const std::
     src << declarations;
     add("common/numerics.glsl", numerics);
     add("slots.glsl", slotDeclarations);
-    for (const auto& [name, text] : slotSources(-1, &sampling)) add(name, text);
+    for (const auto& [name, text] : slotSources(-1, &buildSamplingSlots())) add(name, text);
     std::string main;
     try {
         main = file(builder->buildFile);

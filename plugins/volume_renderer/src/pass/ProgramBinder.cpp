@@ -1,5 +1,6 @@
 #include "ProgramBinder.h"
 
+#include "../compositor/BuildSlots.h"
 #include "../resources/BuiltVolumeKinds.h"
 
 #include <volume_renderer/GraphicsDriver.h>
@@ -114,8 +115,11 @@ std::optional<BrickHidingRule> hidingFor(const BindContext& context, const std::
 std::string builtVolumeKey(const BindContext& context, const std::vector<const Binding*>& bindings,
                            const BuiltVolumeKind& kind, const osg::Program* program)
 {
-    static const std::set<std::string> read = {"VolumeStorage", "Reconstruction", "Classification", "ClipPosition",
-                                               "Weighting", "Shadowing"};
+    static const std::set<std::string> read = [] {  // what the build program composes, and its own slot
+        std::set<std::string> slots = buildSamplingSlots();
+        slots.insert("Shadowing");
+        return slots;
+    }();
     std::string key;
     key.reserve(256);
     auto put = [&key](const auto& value) { key.append(reinterpret_cast<const char*>(&value), sizeof(value)); };
