@@ -226,6 +226,7 @@ TEST_F(LightVolume, ANarrowConeIsAShadowRayThroughTheExtinctionField)
         VolumeNode* node = findVolumeNodes(*scene)[0];
         node->settings.coneAngle = 0.5;  // one voxel wide for 115 voxels: level 0 all the way
         node->settings.coneStart = 0.0;
+        node->settings.coneStepGrowth = 0.5;  // steps of half the one-voxel diameter: the shadow step
         node->settings.ambient = 0.0;    // no ambient term for cone_ao's occlusion to scale
         const osg::Vec4 shadowed = renderOrthoFromPlusZ(scene.get(), 8, 8, 32.0).at(4, 4);
         ASSERT_NE(scene->compositionKeys()[0].find(std::string("Shadowing=") + method), std::string::npos);

@@ -45,8 +45,9 @@ struct RenderSettings
     /// Cone tracing: where the cones start, in voxels from the sample (its own neighbourhood
     /// casts no shadow on it).
     double coneStart = 0.5;
-    /// Cone tracing: each step is this times the cone's diameter there (at least the shadow step).
-    double coneStepGrowth = 0.5;
+    /// Cone tracing: each step is this times the cone's diameter there (at least the shadow step;
+    /// the diameter is at least one voxel).
+    double coneStepGrowth = 1.0;
     /// Cone tracing: the Gaussian pre-filter of the opacity volume, its sigma in voxels (0: none).
     double coneFilterSigma = 0.0;
     /// Ambient occlusion (Shadowing cone_ao): how far its cones reach, in voxels.

@@ -175,7 +175,9 @@ osg::Texture3D* BuiltVolumes::texture(const VolumeNode* node, AuxData kind, cons
         const osg::Texture::WrapMode wrap = mipmapped ? osg::Texture::CLAMP_TO_BORDER : osg::Texture::CLAMP_TO_EDGE;
         for (auto w : {osg::Texture::WRAP_S, osg::Texture::WRAP_T, osg::Texture::WRAP_R}) t->setWrap(w, wrap);
         t->setBorderColor(osg::Vec4d(0, 0, 0, 0));
-        t->setFilter(osg::Texture::MIN_FILTER, mipmapped ? osg::Texture::LINEAR_MIPMAP_LINEAR : osg::Texture::LINEAR);
+        // A mip chain is read from its nearest level (cone steps: half the texels of blending two,
+        // which on llvmpipe cost cones a third of their time, at RMSE within 2% of it).
+        t->setFilter(osg::Texture::MIN_FILTER, mipmapped ? osg::Texture::LINEAR_MIPMAP_NEAREST : osg::Texture::LINEAR);
         t->setFilter(osg::Texture::MAG_FILTER, osg::Texture::LINEAR);
         t->setUseHardwareMipMapGeneration(false);  // the build makes the levels
         if (mipmapped) {  // OSG samples levels up to this count only (GL_TEXTURE_MAX_LEVEL)
