@@ -468,5 +468,55 @@ TEST(ReferenceShadows, AmbientOcclusionDeepInAHomogeneousMediumIsExpMinusSigmaTi
     EXPECT_EQ(occluded.at(0, 0, 3), open.at(0, 0, 3)) << "occlusion changes light, not coverage";
 }
 
+TEST(ReferenceShadows, AmbientOcclusionsFixedQuadratureIsCloseToAFinerOneAndLetsViewRaysConverge)
+{
+    // Blobs in a 24^3 volume, lit by ambient light only: each pixel is the ambient term scaled
+    // by the occlusion along its ray. The default quadrature (12^2 directions, quarter-voxel
+    // steps) against 4x the directions (24^2) at 1/8-voxel steps: the error it states. Before this
+    // quadrature was fixed, the per-sample adaptive one kept view rays from converging.
+    const int n = 24;
+    osg::ref_ptr<Volume> v = new Volume;
+    v->allocate(VoxelType::Float32, {n, n, n});
+    auto* values = reinterpret_cast<float*>(v->data());
+    const osg::Vec3d centres[] = {{6, 8, 12}, {15, 14, 10}, {11, 17, 17}, {17, 6, 15}};
+    for (int z = 0; z < n; ++z)
+        for (int y = 0; y < n; ++y)
+            for (int x = 0; x < n; ++x) {
+                double sum = 0.0;
+                for (const osg::Vec3d& c : centres) sum += std::exp(-(osg::Vec3d(x, y, z) - c).length2() / 18.0);
+                values[(std::size_t(z) * n + y) * n + x] = float(200.0 * std::min(sum, 1.0));
+            }
+    v->dirty();
+    auto tf = transferFunction({{20.0, osg::Vec4(1, 1, 1, 0)}, {120.0, osg::Vec4(1, 0.8f, 0.6f, 0.15f)},
+                                {200.0, osg::Vec4(1, 1, 1, 0.3f)}}, 0.0, 255.0);
+    auto render = [&](bool occlusion, int directions, double step) {
+        auto node = makeVolumeNode(v.get(), tf.get());
+        litByLambert(*node, "ray");
+        node->settings.ambient = 1.0;
+        osg::ref_ptr<osg::Group> root = withNode(node);
+        osg::ref_ptr<osg::LightSource> light = lightAt(osg::Vec4(0, 0, 1, 0));
+        light->getLight()->setDiffuse(osg::Vec4(0, 0, 0, 1));
+        root->addChild(light.get());
+        ReferenceScene content = ReferenceScene::collect(*root);
+        content.volumes[0].occlusion = occlusion;
+        ReferenceOptions options;
+        options.tolerance = 1e-3;
+        options.occlusionDirections = directions;
+        options.occlusionStep = step;
+        return renderReference(content, orthoFromPlusZ(5, 20.0), options);
+    };
+    const ReferenceImage open = render(false, 12, 0.25), coarse = render(true, 12, 0.25), fine = render(true, 24, 0.125);
+    EXPECT_EQ(coarse.unconverged, 0u);
+    EXPECT_EQ(fine.unconverged, 0u);
+    double largest = 0.0, effect = 0.0;
+    for (std::size_t i = 0; i < coarse.rgba.size(); ++i) {
+        largest = std::max(largest, std::abs(coarse.rgba[i] - fine.rgba[i]));
+        effect = std::max(effect, std::abs(open.rgba[i] - fine.rgba[i]));
+    }
+    std::printf("occlusion's effect %.4f, default quadrature against a finer one: %.5f\n", effect, largest);
+    EXPECT_GT(effect, 0.05) << "the blobs occlude each other";
+    EXPECT_LT(largest, 2e-3);
+}
+
 }  // namespace
 }  // namespace volren::test

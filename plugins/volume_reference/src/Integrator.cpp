@@ -40,6 +40,8 @@ Medium mediumOf(const ReferenceScene& scene, const ReferenceScene::Placed& place
     m.shadowTolerance = options.tolerance / 4.0;
     m.shadowFirstStep = options.firstStep;
     m.shadowFinestStep = options.finestStep;
+    m.occlusionDirections = std::max(1, options.occlusionDirections);
+    m.occlusionStep = options.occlusionStep;
     m.shadowsGeometry = placed.shadowsGeometry && lightCount > 0 && m.shading != Shading::None;
     if ((m.shadows != ReferenceScene::Shadows::None || m.shadowsGeometry) && lightCount > 0 && m.shading != Shading::None) {
         for (const Clip& c : clips) m.clips.push_back({c.node, m.localToWorld * c.toShape});

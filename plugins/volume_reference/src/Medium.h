@@ -76,10 +76,13 @@ struct Medium
     double shadowTolerance = 2.5e-5, shadowFirstStep = 0.25, shadowFinestStep = 1.0 / 4096.0;
     /// Ambient occlusion (Shadowing cone_ao): the ambient term scaled by (1/pi) times the
     /// integral over the hemisphere around the normal of the transmittance from occlusionStart to
-    /// occlusionDistance (local lengths) along each direction, weighted by its cosine; the
-    /// quadrature's directions quadrupled until two estimates differ by at most 4 shadowTolerance.
+    /// occlusionDistance (local lengths) along each direction, weighted by its cosine. A fixed
+    /// quadrature (ReferenceOptions::occlusionDirections, occlusionStep), so that the estimate
+    /// is a continuous function of the sample's position and the view ray converges over it.
     bool occlusion = false;
     double occlusionStart = 0.0, occlusionDistance = 0.0;
+    int occlusionDirections = 12;   ///< strata per side of the unit square: their square in all
+    double occlusionStep = 0.25;    ///< each direction's march step, in Δ0
     /// It shadows the opaque geometry (ReferenceScene::Placed::shadowsGeometry; lit media only).
     bool shadowsGeometry = false;
     osg::Matrixd localToWorld;

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace volren::reference {
 
@@ -42,6 +43,7 @@ double opticalDepth(const Medium& m, const glm::dvec3& local, const glm::dvec3& 
     for (std::size_t k = 0; k < count && depth <= enough; ++k) {
         const glm::dvec3 p = local + l * ((double(k) + 0.5) * h);
         const glm::dvec3 tc = p / m.size + 0.5;
+        if (tc.x < 0.0 || tc.y < 0.0 || tc.z < 0.0 || tc.x > 1.0 || tc.y > 1.0 || tc.z > 1.0) continue;  // empty outside
         if (m.inEmptyBlock(tc)) continue;
         bool kept = true;
         for (const Clip& c : m.clips)
@@ -59,32 +61,30 @@ double opticalDepth(const Medium& m, const glm::dvec3& local, const glm::dvec3& 
 
 }  // namespace
 
-double Medium::ambientOcclusion(const glm::dvec3& local, const glm::dvec3& normal, ShadowTally& tally) const
+double Medium::ambientOcclusion(const glm::dvec3& local, const glm::dvec3& normal, ShadowTally&) const
 {
-    if (!(occlusionDistance > occlusionStart)) return 1.0;
+    const double reach = occlusionDistance - occlusionStart;
+    if (!(reach > 0.0)) return 1.0;
+    if (!(occlusionStep > 0.0)) throw std::invalid_argument("reference: ambient occlusion step must be > 0");
     // Cosine-weighted directions at the midpoints of n x n strata of the unit square (r = sqrt(u),
     // phi = 2 pi v over the disc, lifted onto the hemisphere): their mean transmittance is the
-    // cosine-weighted integral over pi.
+    // cosine-weighted integral over pi. Every direction takes the same steps: outside the box
+    // the medium is empty, so a path cut by a face needs no step count of its own (which would
+    // jump with the position).
     const glm::dvec3 helper = std::abs(normal.x) < 0.9 ? glm::dvec3(1.0, 0.0, 0.0) : glm::dvec3(0.0, 1.0, 0.0);
     const glm::dvec3 u = glm::normalize(glm::cross(normal, helper)), v = glm::cross(normal, u);
-    auto estimate = [&](int n) {
-        double sum = 0.0;
-        for (int i = 0; i < n; ++i)
-            for (int j = 0; j < n; ++j) {
-                const double a = (i + 0.5) / n, phi = 2.0 * M_PI * (j + 0.5) / n, r = std::sqrt(a);
-                const glm::dvec3 d = u * (r * std::cos(phi)) + v * (r * std::sin(phi)) + normal * std::sqrt(1.0 - a);
-                sum += transmittance(local + d * occlusionStart, d, occlusionDistance - occlusionStart, tally);
-            }
-        return sum / double(n * n);
-    };
-    double coarse = estimate(4);
-    for (int n = 8; n <= 32; n *= 2) {
-        const double fine = estimate(n);
-        if (std::abs(fine - coarse) <= 4.0 * shadowTolerance) return fine;
-        coarse = fine;
-    }
-    tally.converged = false;
-    return coarse;
+    const std::size_t steps = std::max<std::size_t>(1, std::size_t(std::ceil(reach / (occlusionStep * unitLength))));
+    const int n = occlusionDirections;
+    double sum = 0.0;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+            const double a = (i + 0.5) / n, phi = 2.0 * M_PI * (j + 0.5) / n, r = std::sqrt(a);
+            const glm::dvec3 d = u * (r * std::cos(phi)) + v * (r * std::sin(phi)) + normal * std::sqrt(1.0 - a);
+            const double worldPerLocal = osg::Matrixd::transform3x3(osg::Vec3d(d.x, d.y, d.z), localToWorld).length();
+            const double enough = 40.0 / worldPerLocal;  // T < 4.3e-18
+            sum += std::exp(-opticalDepth(*this, local + d * occlusionStart, d, reach, steps, enough) * worldPerLocal);
+        }
+    return sum / double(n * n);
 }
 
 void Medium::findEmptyBlocks()

@@ -43,6 +43,13 @@ struct ReferenceOptions
     /// convention), or the exact gradient of the trilinear field (it jumps across voxel faces;
     /// on noisy data its normals differ from any smooth estimate at every surface).
     enum class Gradient { Exact, CentralDifferences } gradient = Gradient::CentralDifferences;
+    /// Ambient occlusion (ReferenceScene::Placed::occlusion) by a fixed quadrature, not halved
+    /// until converged (a per-sample adaptive estimate jumps from sample to sample, and the view
+    /// ray then never converges): the cosine-weighted directions at the midpoints of
+    /// occlusionDirections^2 strata of the unit square, each marched in steps of occlusionStep x
+    /// the smallest spacing. Its own error: ReferenceShadows tests it against a finer quadrature.
+    int occlusionDirections = 12;
+    double occlusionStep = 0.25;
 };
 
 /// The result: RGBA in double precision, row 0 at the bottom, colour premultiplied and composited
