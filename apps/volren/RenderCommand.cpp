@@ -102,6 +102,7 @@ int renderCommand(const std::vector<std::string>& args, bool defaultRun)
                                     {"builds", l.builds},
                                     {"last_build_ms", l.lastBuildSeconds * 1e3}});
         stats["built_volumes"] = built;
+        stats["geometry_shadow_map_draws"] = renderer.volumeScene()->geometryShadowMapDraws();
         stats["streamed_frames"] = streamed.size();  // frames after --frames until the bricks converged
         stats["streamed_ms"] = streamMs;
         std::vector<double> cpu, draw, gpu;

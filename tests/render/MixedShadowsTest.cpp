@@ -78,6 +78,59 @@ TEST_F(MixedShadows, AnOpaqueSquareBetweenTheLightAndTheBlockTakesItsLightWithEv
     }
 }
 
+TEST_F(MixedShadows, TheLightsDepthMapIsDrawnAgainOnlyWhenTheLightTheGeometryOrTheContextChanges)
+{
+    osg::ref_ptr<Volume> block = constantVolume(VoxelType::UInt8, {depthVoxels, depthVoxels, depthVoxels}, 100);
+    osg::ref_ptr<TransferFunction> tf = constantTransferFunction(osg::Vec4(0.9f, 0.6f, 0.3f, float(alpha)));
+    osg::ref_ptr<VolumeScene> scene = lit(block.get(), tf.get(), "ray", 1.0, {lightsAboveAndInFront[0]});
+    osg::ref_ptr<osg::MatrixTransform> square = dynamic_cast<osg::MatrixTransform*>(squareOverTheLeftHalf().get());
+    ASSERT_TRUE(square);
+    scene->addChild(square.get());
+    // Which half of the block (pixels 4..11; x < 0 is 4..7) is dark in each of its rows.
+    auto darkHalf = [](const Pixels& img) {
+        bool left = true, right = true;
+        for (int y = 4; y < 12; ++y)
+            for (int x = 4; x < 12; ++x) (x < 8 ? left : right) = (x < 8 ? left : right) && img.at(x, y).r() < 1e-4f;
+        return left && !right ? "left" : right && !left ? "right" : left ? "both" : "none";
+    };
+    const Pixels first = renderOrthoFromPlusZ(scene.get(), 16, 16, 32.0);
+    EXPECT_STREQ(darkHalf(first), "left");
+    EXPECT_EQ(scene->geometryShadowMapDraws(), 1u);
+    const Pixels again = renderOrthoFromPlusZ(scene.get(), 16, 16, 32.0);
+    EXPECT_EQ(scene->geometryShadowMapDraws(), 1u) << "nothing changed: the map is kept";
+    for (std::size_t i = 0; i < first.rgba.size(); ++i) ASSERT_EQ(again.rgba[i], first.rgba[i]) << i;
+
+    square->setMatrix(square->getMatrix() * osg::Matrixd::translate(20, 0, 0));  // over the right half
+    EXPECT_STREQ(darkHalf(renderOrthoFromPlusZ(scene.get(), 16, 16, 32.0)), "right");
+    EXPECT_EQ(scene->geometryShadowMapDraws(), 2u) << "a transform moved";
+
+    // The same drawable, its vertices moved back over the left half (dirty() counts the change).
+    struct FindGeometry : osg::NodeVisitor
+    {
+        osg::Geometry* found = nullptr;
+        FindGeometry() : osg::NodeVisitor(TRAVERSE_ALL_CHILDREN) {}
+        void apply(osg::Geometry& g) override { found = &g; }
+    } find;
+    square->accept(find);
+    ASSERT_TRUE(find.found);
+    auto* corners = static_cast<osg::Vec3Array*>(find.found->getVertexArray());
+    for (osg::Vec3& c : *corners) c.x() -= 2.0f;  // the transform scales x by 10: 20 units
+    corners->dirty();
+    find.found->dirtyGLObjects();  // its display list, where one is used
+    find.found->dirtyBound();
+    EXPECT_STREQ(darkHalf(renderOrthoFromPlusZ(scene.get(), 16, 16, 32.0)), "left");
+    EXPECT_EQ(scene->geometryShadowMapDraws(), 3u) << "vertices moved";
+
+    dynamic_cast<osg::LightSource*>(scene->getChild(1))->getLight()->setPosition({0, 1, 1.05f, 0});  // still through the square
+    EXPECT_STREQ(darkHalf(renderOrthoFromPlusZ(scene.get(), 16, 16, 32.0)), "left");
+    EXPECT_EQ(scene->geometryShadowMapDraws(), 4u) << "the light moved";
+
+    renderer(16, 16, 4);  // a new renderer: a new context, which holds no map yet
+    EXPECT_STREQ(darkHalf(renderOrthoFromPlusZ(scene.get(), 16, 16, 32.0)), "left");
+    EXPECT_EQ(scene->geometryShadowMapDraws(), 5u) << "a new context";
+    renderer(16, 16, 1);
+}
+
 TEST_F(MixedShadows, BlendedGeometryAndUnshadowedVolumesIgnoreTheSquare)
 {
     osg::ref_ptr<Volume> block = constantVolume(VoxelType::UInt8, {depthVoxels, depthVoxels, depthVoxels}, 100);

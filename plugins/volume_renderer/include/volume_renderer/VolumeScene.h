@@ -67,6 +67,9 @@ public:
     /// Statistics of the auxiliary volumes built on the GPU (light volumes, opacity mip chains)
     /// the last cull used.
     std::vector<BuiltVolumeStatistics> builtVolumeStatistics() const;
+    /// Depth maps of the opaque geometry drawn from the lights so far (for shadowing volumes;
+    /// one per light and frame where its light, the geometry or a transform had changed).
+    unsigned int geometryShadowMapDraws() const;
     /// Bricks the last cull traversal planned that are not in their pools yet (pass.streamBricks).
     std::size_t pendingBricks() const;
     /// Waits up to `seconds` for the brick loaders of the last cull traversal's volumes.

@@ -231,6 +231,12 @@ std::vector<BuiltVolumeStatistics> VolumeScene::builtVolumeStatistics() const
     return _state->textures.builtVolumes().statistics(_state->cull);
 }
 
+unsigned int VolumeScene::geometryShadowMapDraws() const
+{
+    std::lock_guard<std::mutex> lock(_mutex);
+    return _state->geometryShadows.draws();
+}
+
 std::size_t VolumeScene::pendingBricks() const
 {
     std::lock_guard<std::mutex> lock(_mutex);

@@ -4,11 +4,13 @@
 #include "GeometryShadowMaps.h"
 
 #include <osg/ColorMask>
+#include <osg/Geometry>
 #include <osg/Notify>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 namespace volren {
@@ -27,6 +29,57 @@ public:
     {
         osg::ref_ptr<osg::Group> s;
         if (scene.lock(s)) s->osg::Group::traverse(*nv);
+    }
+};
+
+/// What the maps' depth depends on below a scene's children: each drawable the active children
+/// reach (under the traversal mask), its accumulated matrix, and for geometry the identity and
+/// dirty() count of its vertex array and primitive sets (other drawables: their bounds). State
+/// that changes depth otherwise (a polygon mode, an LOD switched by distance) is not seen.
+class CasterSignature : public osg::NodeVisitor
+{
+public:
+    std::vector<std::uint64_t> values;
+
+    explicit CasterSignature(osg::Node::NodeMask mask) : osg::NodeVisitor(TRAVERSE_ACTIVE_CHILDREN)
+    {
+        setTraversalMask(mask);
+    }
+
+    void apply(osg::Transform& t) override
+    {
+        const osg::Matrixd outer = _matrix;
+        t.computeLocalToWorldMatrix(_matrix, this);
+        traverse(t);
+        _matrix = outer;
+    }
+
+    void apply(osg::Drawable& d) override
+    {
+        values.push_back(reinterpret_cast<std::uintptr_t>(&d));
+        for (int i = 0; i < 16; ++i) add(_matrix.ptr()[i]);
+        if (const osg::Geometry* g = d.asGeometry()) {
+            const osg::Array* vertices = g->getVertexArray();
+            values.push_back(reinterpret_cast<std::uintptr_t>(vertices));
+            values.push_back(vertices ? vertices->getModifiedCount() : 0);
+            for (const osg::ref_ptr<osg::PrimitiveSet>& p : g->getPrimitiveSetList()) {
+                values.push_back(reinterpret_cast<std::uintptr_t>(p.get()));
+                values.push_back(p ? p->getModifiedCount() : 0);
+            }
+        } else {
+            const osg::BoundingBox& b = d.getBoundingBox();
+            for (int i = 0; i < 3; ++i) add(b._min[i]), add(b._max[i]);
+        }
+    }
+
+private:
+    osg::Matrixd _matrix;
+
+    void add(double v)
+    {
+        std::uint64_t bits;
+        std::memcpy(&bits, &v, sizeof bits);
+        values.push_back(bits);
     }
 };
 
@@ -110,7 +163,17 @@ void GeometryShadowMaps::cull(osgUtil::CullVisitor& cv, osg::Group& scene, const
         _texture->setTextureSize(size, size, int(n));
         _texture->dirtyTextureObject();
         _cameras.clear();
+        _drawnFrom.clear();
     }
+    // A layer is drawn again where its frustum or the casters changed, or where this context
+    // holds no map yet (its first frame, or a new context after one was closed).
+    CasterSignature signature(cv.getTraversalMask());
+    for (unsigned int i = 0; i < scene.getNumChildren(); ++i) scene.getChild(i)->accept(signature);
+    const bool castersChanged = signature.values != _casters;
+    if (castersChanged) _casters = std::move(signature.values);
+    const bool unmapped = !_texture->getTextureObject(cv.getState() ? cv.getState()->getContextID() : 0);
+    if (castersChanged || unmapped) _drawnFrom.clear();
+    _drawnFrom.resize(n, zero);
     osg::BoundingSphered casters;
     if (const osg::BoundingSphere& b = scene.getBound(); b.valid()) casters.set(osg::Vec3d(b.center()), b.radius());
     casters.expandBy(receivers);
@@ -140,12 +203,15 @@ void GeometryShadowMaps::cull(osgUtil::CullVisitor& cv, osg::Group& scene, const
                      << "shadow them from it" << std::endl;
             continue;
         }
+        _matrices[i] = view * projection * osg::Matrixd::scale(0.5, 0.5, 0.5) * osg::Matrixd::translate(0.5, 0.5, 0.5);
+        if (_drawnFrom[i] == _matrices[i]) continue;  // the layer holds this map
         osg::Camera& camera = *_cameras[i];
         dynamic_cast<DrawSceneChildren&>(*camera.getCullCallback()).scene = &scene;
         camera.setViewMatrix(view);
         camera.setProjectionMatrix(projection);
         camera.accept(cv);
-        _matrices[i] = view * projection * osg::Matrixd::scale(0.5, 0.5, 0.5) * osg::Matrixd::translate(0.5, 0.5, 0.5);
+        _drawnFrom[i] = _matrices[i];
+        ++_draws;
     }
 }
 

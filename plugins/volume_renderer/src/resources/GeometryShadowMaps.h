@@ -10,12 +10,15 @@
 #include <osg/Texture2DArray>
 #include <osgUtil/CullVisitor>
 
+#include <cstdint>
 #include <vector>
 
 namespace volren {
 
 /// One depth layer per light (the first four) of the opaque geometry below a VolumeScene,
-/// drawn by pre-render cameras each frame the shadowing volumes are drawn.
+/// drawn by pre-render cameras in the frames where it changed: a light's map is drawn again
+/// only when its frustum, the drawables reached below the scene, their matrices or what their
+/// arrays' and primitive sets' dirty() counts change (or the context has no map yet).
 class GeometryShadowMaps
 {
 public:
@@ -33,11 +36,16 @@ public:
     /// Per light of the last cull: VolumeScene coordinates -> its map's [0,1]^3 coordinates; a
     /// zero matrix where no single map covers the receivers (a point light inside their box).
     const std::vector<osg::Matrixd>& matrices() const { return _matrices; }
+    /// Maps drawn so far (one per light and frame where it had to be drawn again).
+    unsigned int draws() const { return _draws; }
 
 private:
     osg::ref_ptr<osg::Texture2DArray> _texture;
     std::vector<osg::ref_ptr<osg::Camera>> _cameras;
     std::vector<osg::Matrixd> _matrices;
+    std::vector<std::uint64_t> _casters;     ///< what the maps were last drawn from (CasterSignature)
+    std::vector<osg::Matrixd> _drawnFrom;    ///< per layer: the frustum it was last drawn with
+    unsigned int _draws = 0;
 };
 
 }  // namespace volren
