@@ -3,11 +3,15 @@
 // geometry seen from the light (one layer per light; the 2x2 texels around the point compared
 // and mixed bilinearly, in the shader: core profiles may not set a texture's compare mode).
 // volren_geometryShadowMatrix[light] maps texture space to the map's [0,1]^3 coordinates (a
-// zero matrix: no map covers this light); volren_geometryShadowCount is 0 in scenes without
-// opaque geometry, where no map is read. Points outside the map are lit.
+// zero matrix: no map covers this light); volren_geometryShadowCount is the number of maps.
+// Points outside the map are lit. Without opaque geometry (VOLREN_GEOMETRY_SHADOWS 0, from
+// Composition::geometryShadows) the lookup is compiled out.
 // float volren_geometryLight(vec3 pos, int light)
 float volren_geometryLight(vec3 pos, int light)
 {
+#if !VOLREN_GEOMETRY_SHADOWS
+    return 1.0;
+#else
     if (light >= volren_geometryShadowCount) return 1.0;
     vec4 p = volren_geometryShadowMatrix[light] * vec4(pos, 1.0);
     if (!(p.w > 0.0)) return 1.0;
@@ -21,4 +25,5 @@ float volren_geometryLight(vec3 pos, int light)
     vec4 depth = textureGather(volren_geometryShadow, vec3((floor(t) + 1.0) / size, float(light)));
     vec4 lit = step(vec4(q.z - volren_geometryShadowBias[light]), depth);  // gather: (0,1) (1,1) (1,0) (0,0)
     return mix(mix(lit.w, lit.z, f.x), mix(lit.x, lit.y, f.x), f.y);
+#endif
 }

@@ -60,8 +60,10 @@ TEST_F(MixedShadows, AnOpaqueSquareBetweenTheLightAndTheBlockTakesItsLightWithEv
             osg::ref_ptr<VolumeScene> scene = lit(block.get(), tf.get(), method, 1.0, {light});
             scene->addChild(invisibleBound().get());  // the same framing (bounding sphere) as with the square
             const Pixels open = renderOrthoFromPlusZ(scene.get(), 16, 16, 32.0);
+            EXPECT_EQ(scene->compositionKeys()[0].find("geometryShadows=1;"), std::string::npos) << "no maps to read";
             scene->addChild(squareOverTheLeftHalf().get());
             const Pixels shadowed = renderOrthoFromPlusZ(scene.get(), 16, 16, 32.0);
+            EXPECT_NE(scene->compositionKeys()[0].find("geometryShadows=1;"), std::string::npos) << "the maps compiled in";
             // The block covers pixels 4..11 (2 units each); x < 0 is pixels 4..7.
             for (int y = 4; y < 12; ++y) {
                 for (int x = 4; x < 12; ++x) {

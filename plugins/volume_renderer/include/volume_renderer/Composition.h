@@ -15,11 +15,14 @@ struct Composition
     unsigned int lightCount = 0;                                ///< lights the shading loops over
     /// Weighting/axes: per axis, the vec4s of curve segments (four each) the program evaluates.
     std::array<unsigned int, 3> weightGroups = {0, 0, 0};
+    /// The Shadowing reads the opaque geometry's depth maps from the lights (the scene has
+    /// opaque geometry); otherwise that lookup is compiled out.
+    bool geometryShadows = false;
     /// A multi-volume set: one composition per member (their sample slots, clip planes and
     /// lights), marched along one ray by this composition's RayTraversal (`sum_of_media`).
     std::vector<Composition> members;
 
-    /// Full key "Slot=impl;...;ClipPosition=[box,plane];lights=N;[weightGroups=X,Y,Z;]" over
+    /// Full key "Slot=impl;...;ClipPosition=[box,plane];lights=N;[weightGroups=X,Y,Z;][geometryShadows=1;]" over
     /// every slot, defaults filled in; programs are cached by the whole key.
     std::string key() const;
     /// Implementation for ordinary `slot` (CompositionPolicy::defaultImplementation when not chosen).

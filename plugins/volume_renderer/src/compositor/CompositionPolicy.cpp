@@ -113,6 +113,12 @@ ChosenComposition CompositionPolicy::choose(const RenderSettings& settings, cons
             out.composition.choice[slot.name] = wish.chosen(slot.name, defaultImplementation(slot.name));
     chooseClips(out, settings, offer, pass);
     chooseWeighting(out, settings, pass);
+    // The opaque geometry's depth maps only where there is opaque geometry to shadow a lit volume
+    // (compiled out otherwise: a driver that runs a uniform branch's both sides, as llvmpipe,
+    // paid for the lookup at every lit sample, a fifth of a light-volume frame).
+    if (const ShaderFunction* f = _registry.find("Shadowing", out.composition.functionFor("Shadowing")))
+        out.composition.geometryShadows =
+            offer.opaqueGeometry && out.composition.lightCount > 0 && f->needsAux(AuxData::GeometryShadowMap);
     if (out.composition.functionFor("Reconstruction") == none && wish.named("VolumeStorage").empty())
         out.composition.choice["VolumeStorage"] = none;  // nothing reads voxels
     else if (offer.exceedsTextureBudget && wish.named("VolumeStorage").empty())

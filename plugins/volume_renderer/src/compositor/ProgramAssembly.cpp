@@ -39,7 +39,7 @@ std::set<std::string> definedNames(const std::string& text)
 /// per-composition macros (VOLREN_LIGHT_COUNT, VOLREN_LIGHT_ARRAY) too.
 std::string renameForMember(const std::string& text, const std::set<std::string>& shared, const std::string& suffix)
 {
-    static const std::regex name(R"(\b(volren_\w+|VOLREN_LIGHT_COUNT|VOLREN_LIGHT_ARRAY|VOLREN_WEIGHT_GROUPS_[XYZ])\b)");
+    static const std::regex name(R"(\b(volren_\w+|VOLREN_LIGHT_COUNT|VOLREN_LIGHT_ARRAY|VOLREN_WEIGHT_GROUPS_[XYZ]|VOLREN_GEOMETRY_SHADOWS)\b)");
     std::string out;
     auto last = text.cbegin();
     for (auto it = std::sregex_iterator(text.begin(), text.end(), name); it != std::sregex_iterator(); ++it) {
@@ -176,6 +176,7 @@ std::string ProgramAssembly::header() const
     auto weightGroups = [&src](const Composition& c, const std::string& suffix) {
         for (std::size_t axis = 0; axis < 3; ++axis)
             src << "#define VOLREN_WEIGHT_GROUPS_" << "XYZ"[axis] << suffix << " " << c.weightGroups[axis] << "\n";
+        src << "#define VOLREN_GEOMETRY_SHADOWS" << suffix << " " << (c.geometryShadows ? 1 : 0) << "\n";
     };
     weightGroups(_composition, "");
     if (!_composition.members.empty()) src << "#define VOLREN_MEMBER_COUNT " << _composition.members.size() << "\n";

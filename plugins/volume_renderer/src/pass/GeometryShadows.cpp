@@ -9,9 +9,7 @@ namespace {
 /// Whether the Shadowing of `composition` (or of a set member) reads the geometry shadow maps.
 bool readsGeometryShadows(const Composition& composition)
 {
-    if (composition.lightCount == 0) return false;
-    const ShaderFunction* f = ShaderFunctionRegistry::instance().find("Shadowing", composition.functionFor("Shadowing"));
-    if (f && f->needsAux(AuxData::GeometryShadowMap)) return true;
+    if (composition.geometryShadows) return true;
     for (const Composition& member : composition.members)
         if (readsGeometryShadows(member)) return true;
     return false;
