@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <mutex>
 
 namespace volren {
 
@@ -156,6 +157,13 @@ void GeometryShadowMaps::cull(osgUtil::CullVisitor& cv, osg::Group& scene, const
                               const osg::BoundingBoxd& receivers)
 {
     const std::size_t n = std::min(lights.size(), maxLights);
+    if (lights.size() > maxLights) {
+        static std::once_flag told;  // culled every frame
+        std::call_once(told, [&] {
+            OSG_NOTICE << "volren: opaque geometry shadows volumes from the first " << maxLights << " lights only; lights "
+                       << maxLights + 1 << "-" << lights.size() << " pass through it" << std::endl;
+        });
+    }
     const osg::Matrixd zero(0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0);
     _matrices.assign(n, zero);
     if (n == 0 || !receivers.valid()) return;
