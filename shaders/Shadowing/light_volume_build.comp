@@ -17,7 +17,14 @@ layout(rg16f, binding = 1) uniform image3D volren_lightImage;
 #else
 layout(rgba16f, binding = 1) uniform image3D volren_lightImage;
 #endif
-uniform int volren_buildLight;  // the light (channel) being built
+uniform int volren_buildLight;  // the light being built: channel volren_buildLight % 4 of layer volren_buildLight / 4
+#if VOLREN_LIGHT_COUNT > 4
+const int volren_lightLayers = 2;  // lights 4-7 in a second layer stacked along z
+#else
+const int volren_lightLayers = 1;
+#endif
+int volren_layerZ = 0;   // the built light's layer: its first z in the image
+int volren_channel = 0;  // its channel there
 uniform int volren_buildAxis;   // the sweep axis
 uniform int volren_buildSlice;  // the slice along it
 
@@ -44,10 +51,11 @@ float volren_gatherSlice(int slice, vec3 q, ivec3 n, vec3 dirTex)
     ivec2 i0 = ivec2(floor(st));
     ivec2 i1 = min(i0 + 1, size - 1);
     vec2 f = st - vec2(i0);
-    float t00 = imageLoad(volren_lightImage, volren_sliceTexel(slice, i0))[volren_buildLight];
-    float t10 = imageLoad(volren_lightImage, volren_sliceTexel(slice, ivec2(i1.x, i0.y)))[volren_buildLight];
-    float t01 = imageLoad(volren_lightImage, volren_sliceTexel(slice, ivec2(i0.x, i1.y)))[volren_buildLight];
-    float t11 = imageLoad(volren_lightImage, volren_sliceTexel(slice, i1))[volren_buildLight];
+    ivec3 layer = ivec3(0, 0, volren_layerZ);
+    float t00 = imageLoad(volren_lightImage, layer + volren_sliceTexel(slice, i0))[volren_channel];
+    float t10 = imageLoad(volren_lightImage, layer + volren_sliceTexel(slice, ivec2(i1.x, i0.y)))[volren_channel];
+    float t01 = imageLoad(volren_lightImage, layer + volren_sliceTexel(slice, ivec2(i0.x, i1.y)))[volren_channel];
+    float t11 = imageLoad(volren_lightImage, layer + volren_sliceTexel(slice, i1))[volren_channel];
     float t = mix(mix(t00, t10, f.x), mix(t01, t11, f.x), f.y);
     for (int b = 0; b < 2; ++b) {
         float beyond = unclamped[b] - st[b];  // in texels past the outermost centre, up to 1/2 at the face
@@ -59,6 +67,9 @@ float volren_gatherSlice(int slice, vec3 q, ivec3 n, vec3 dirTex)
 void main()
 {
     ivec3 n = imageSize(volren_lightImage);
+    n.z /= volren_lightLayers;  // one layer's texels
+    volren_layerZ = (volren_buildLight / 4) * n.z;
+    volren_channel = volren_buildLight % 4;
     ivec3 texel = volren_sliceTexel(volren_buildSlice, ivec2(gl_GlobalInvocationID.xy));
     if (any(greaterThanEqual(texel, n))) return;
     vec3 pos = (vec3(texel) + 0.5) / vec3(n);
@@ -91,7 +102,8 @@ void main()
         }
         transmittance = clamp(incoming, 0.0, 1.0) * exp(-depth);
     }
-    vec4 stored = imageLoad(volren_lightImage, texel);
-    stored[volren_buildLight] = transmittance;
-    imageStore(volren_lightImage, texel, stored);
+    ivec3 at = texel + ivec3(0, 0, volren_layerZ);
+    vec4 stored = imageLoad(volren_lightImage, at);
+    stored[volren_channel] = transmittance;
+    imageStore(volren_lightImage, at, stored);
 }

@@ -5,13 +5,14 @@
 // between the point and the box; see transmittanceFrom for the face). The output multiplies the pixel's colour (blending
 // GL_ZERO, GL_SRC_COLOR; alpha kept) by the mean over the lights: exact for one light without
 // ambient or emission, an approximation otherwise (the pass cannot separate the polygons'
-// light by light). Lights past the fourth, which the light volume does not hold, count as 1.
+// light by light). Lights past the eighth, which the light volume does not hold, count as 1.
 uniform sampler2D volren_depthTexture;
 uniform vec2 volren_viewportOrigin;
 uniform sampler3D volren_lightVolume;
-uniform int volren_heldLights;    // lights in the light volume (<= 4)
+uniform int volren_lightLayers;   // layers of the light volume stacked along z (lights 0-3, 4-7)
+uniform int volren_heldLights;    // lights in the light volume (<= 8)
 uniform int volren_totalLights;   // lights reaching the volume
-uniform vec4 volren_textureLights[4];  // texture space: w = 0 direction towards the light, w = 1 position
+uniform vec4 volren_textureLights[8];  // texture space: w = 0 direction towards the light, w = 1 position
 flat in mat4 volren_clipToTexture;
 out vec4 volren_fragColour;
 
@@ -30,6 +31,16 @@ vec2 unitBoxSpan(vec3 p, vec3 d)
     return span;
 }
 
+// Light `light`'s channel of the light volume at `q`: in layer light / 4, its z clamped to that
+// layer's texel centres (as the edge clamp of a single layer).
+float heldLight(vec3 q, int light)
+{
+    int layer = light / 4;
+    float nz = float(textureSize(volren_lightVolume, 0).z) / float(volren_lightLayers);
+    vec3 at = vec3(q.xy, (clamp(q.z * nz, 0.5, nz - 0.5) + float(layer) * nz) / (float(volren_lightLayers) * nz));
+    return clamp(texture(volren_lightVolume, at)[light - 4 * layer], 0.0, 1.0);
+}
+
 // Light `light`'s transmittance at `q`, where the way towards it along `d` stays in the box
 // over the parameter length `inside`. The texels hold it at their centres, half a texel in from
 // the faces: at a face the light has crossed that half texel more, so there (`onFace`) it is
@@ -37,10 +48,11 @@ vec2 unitBoxSpan(vec3 p, vec3 d)
 // homogeneous medium (log-linear).
 float transmittanceFrom(vec3 q, vec3 d, float inside, int light, bool onFace)
 {
-    float texel = 1.0 / length(d * vec3(textureSize(volren_lightVolume, 0)));  // parameter per texel
-    if (!onFace || inside < 1.5 * texel) return clamp(texture(volren_lightVolume, q)[light], 0.0, 1.0);
-    float a = clamp(texture(volren_lightVolume, q + d * (0.5 * texel))[light], 0.0, 1.0);
-    float b = clamp(texture(volren_lightVolume, q + d * (1.5 * texel))[light], 0.0, 1.0);
+    vec3 size = vec3(textureSize(volren_lightVolume, 0)) / vec3(1.0, 1.0, float(volren_lightLayers));  // one layer's
+    float texel = 1.0 / length(d * size);  // parameter per texel
+    if (!onFace || inside < 1.5 * texel) return heldLight(q, light);
+    float a = heldLight(q + d * (0.5 * texel), light);
+    float b = heldLight(q + d * (1.5 * texel), light);
     if (a <= 0.0 || b <= 0.0) return a;
     return a * sqrt(min(a / b, 1.0));
 }

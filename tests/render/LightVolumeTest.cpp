@@ -216,6 +216,50 @@ double chainDepth(double depth)
     return total;
 }
 
+TEST_F(LightVolume, LightsFiveToEightInTheSecondLayerShadowAsEachAloneDoes)
+{
+    // Six lights (the last two in the light volume's second layer) light the sphere as the sum of
+    // the six lit alone: Lambert light adds up, and each channel is built and read as a light
+    // volume of its own would be. Dim lights keep every sum below 1.
+    osg::ref_ptr<Volume> volume = sphereInBlock();
+    osg::ref_ptr<TransferFunction> tf =
+        transferFunction({{0, {0, 0, 0, 0}}, {60, {0.9f, 0.8f, 0.6f, 0.05f}}, {200, {0.4f, 0.7f, 1.0f, 0.5f}}, {255, {1, 1, 1, 0.5f}}}, 0, 255);
+    const std::vector<osg::Vec4> lights = {{0, 0, 1, 0},  {1, 0, 0, 0},      {0, 1, 0, 0},
+                                           {0, -1, 1, 0}, {1, 0.6f, 0.8f, 0}, {-12, 10, 20, 1}};
+    auto image = [&](const std::vector<osg::Vec4>& which) {
+        osg::ref_ptr<VolumeScene> scene = lit(volume.get(), tf.get(), "light_volume", 1.0, which);
+        for (unsigned int i = 1; i < scene->getNumChildren(); ++i)
+            dynamic_cast<osg::LightSource*>(scene->getChild(i))->getLight()->setDiffuse({0.15f, 0.15f, 0.15f, 1});
+        const Pixels img = renderOrthoFromPlusZ(scene.get(), 32, 32, 36.0);
+        if (which.size() > 4) {
+            const std::vector<BuiltVolumeStatistics> stats = scene->builtVolumeStatistics();
+            EXPECT_EQ(stats.at(0).dims, osg::Vec3i(16, 24, 40)) << "two layers of the volume's 16x24x20";
+        }
+        return img;
+    };
+    const Pixels all = image(lights);
+    std::vector<Pixels> alone;
+    for (const osg::Vec4& l : lights) alone.push_back(image({l}));
+    const Pixels unshadowedLastTwo = [&] {
+        osg::ref_ptr<VolumeScene> scene = lit(volume.get(), tf.get(), "null", 1.0, {lights[4], lights[5]});
+        for (unsigned int i = 1; i < scene->getNumChildren(); ++i)
+            dynamic_cast<osg::LightSource*>(scene->getChild(i))->getLight()->setDiffuse({0.15f, 0.15f, 0.15f, 1});
+        return renderOrthoFromPlusZ(scene.get(), 32, 32, 36.0);
+    }();
+    double largest = 0.0, shadowOfLastTwo = 0.0;
+    for (std::size_t p = 0; p < all.rgba.size(); ++p)
+        for (int c = 0; c < 3; ++c) {
+            double sum = 0.0;
+            for (const Pixels& one : alone) sum += one.rgba[p][c];
+            ASSERT_LT(sum, 0.95) << "no clamping";
+            largest = std::max(largest, std::abs(all.rgba[p][c] - sum));
+            shadowOfLastTwo = std::max(shadowOfLastTwo, std::abs(double(unshadowedLastTwo.rgba[p][c]) - alone[4].rgba[p][c] -
+                                                                 alone[5].rgba[p][c]));
+        }
+    EXPECT_GT(shadowOfLastTwo, 0.01) << "lights 5 and 6 cast shadows worth testing";
+    EXPECT_LT(largest, 2e-4);
+}
+
 TEST_F(LightVolume, ANarrowConeIsAShadowRayThroughTheExtinctionField)
 {
     osg::ref_ptr<Volume> block = constantVolume(VoxelType::UInt8, {depthVoxels, depthVoxels, depthVoxels}, 100);

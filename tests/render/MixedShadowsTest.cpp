@@ -208,7 +208,9 @@ TEST_F(MixedShadows, TheLightVolumeDarkensTheGeometryBehindTheBlockByItsTransmit
     const std::vector<std::vector<osg::Vec4>> cases = {{{0, 0, 1, 0}},  // along the view, slanted, a point
                                                        {{1, 0, 1, 0}},
                                                        {{6, 0, 30, 1}},
-                                                       {{0, 0, 1, 0}, {-1, 0, 0, 0}}};  // the second misses
+                                                       {{0, 0, 1, 0}, {-1, 0, 0, 0}},  // the second misses
+                                                       // six: the last two in the light volume's second layer
+                                                       {{0, 0, 1, 0}, {0, 0, 1, 0}, {0, 0, 1, 0}, {0, 0, 1, 0}, {1, 0, 1, 0}, {6, 0, 30, 1}}};
     for (const std::vector<osg::Vec4>& lights : cases) {
         for (const char* method : {"light_volume", "ray"}) {
             SCOPED_TRACE(std::string(method) + ", " + std::to_string(lights.size()) + " light(s), first w " +

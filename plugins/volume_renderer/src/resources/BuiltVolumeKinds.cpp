@@ -15,7 +15,12 @@ const std::vector<BuiltVolumeKind>& builtVolumeKinds()
          .sampler = "volren_lightVolume",
          .readsLights = true,
          .mipmapped = false,
-         .dims = [](const osg::Vec3i& level, const BindContext& c) { return lightVolumeDims(level, c.settings.lightVolumeScale); },
+         .dims =
+             [](const osg::Vec3i& level, const BindContext& c) {
+                 osg::Vec3i d = lightVolumeDims(level, c.settings.lightVolumeScale);
+                 d.z() *= lightVolumeLayers(c.lights.size());  // lights 4-7 in a second layer
+                 return d;
+             },
          .channels = [](const BindContext& c) { return lightVolumeChannels(c.lights.size()); },
          .plan = [](const BindContext& c, const osg::Vec3d& size, const osg::Vec3i& dims) {
              return lightVolumePlan(c.lights, size, dims);

@@ -26,10 +26,15 @@ osg::Vec3i lightVolumeDims(const osg::Vec3i& dims, double scale)
     return out;
 }
 
+int lightVolumeLayers(std::size_t lights)
+{
+    return lights > 4 ? 2 : 1;
+}
+
 int lightVolumeChannels(std::size_t lights)
 {
     const int n = int(std::clamp<std::size_t>(lights, 1, maxLights));
-    return n == 3 ? 4 : n;
+    return n >= 3 ? 4 : n;
 }
 
 osg::Vec4d lightInTextureSpace(const LightInfo& light, const osg::Vec3d& worldSize)
@@ -41,8 +46,10 @@ osg::Vec4d lightInTextureSpace(const LightInfo& light, const osg::Vec3d& worldSi
 }
 
 std::vector<BuildDispatch> lightVolumePlan(const std::vector<LightInfo>& lights, const osg::Vec3d& worldSize,
-                                           const osg::Vec3i& dims)
+                                           const osg::Vec3i& texture)
 {
+    osg::Vec3i dims = texture;  // one layer's
+    dims.z() /= lightVolumeLayers(lights.size());
     std::vector<BuildDispatch> plan;
     if (lights.size() > std::size_t(maxLights)) {
         static std::once_flag told;  // the plan is made at every rebuild

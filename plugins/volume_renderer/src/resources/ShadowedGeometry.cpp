@@ -87,6 +87,7 @@ void ShadowedGeometry::cull(osgUtil::CullVisitor& cv, const void* node, const os
     ss->setTextureAttribute(1, lightVolume, osg::StateAttribute::ON);
     ss->getOrCreateUniform("volren_worldSize", osg::Uniform::FLOAT_VEC3)->set(osg::Vec3f(worldSize));
     const int held = int(std::min<std::size_t>(lights.size(), lightVolumeMaxLights));
+    ss->getOrCreateUniform("volren_lightLayers", osg::Uniform::INT)->set(lightVolumeLayers(lights.size()));
     ss->getOrCreateUniform("volren_heldLights", osg::Uniform::INT)->set(held);
     ss->getOrCreateUniform("volren_totalLights", osg::Uniform::INT)->set(int(lights.size()));
     osg::Uniform* placed = ss->getOrCreateUniform("volren_textureLights", osg::Uniform::FLOAT_VEC4, lightVolumeMaxLights);
