@@ -15,6 +15,7 @@ uniform int volren_totalLights;   // lights reaching the volume
 uniform vec4 volren_textureLights[8];  // texture space: w = 0 direction towards the light, w = 1 position
 flat in mat4 volren_clipToTexture;
 out vec4 volren_fragColour;
+// Shadowing/light_volume_layers.glsl is spliced in here (ShadowedGeometry.cpp): volren_lightVolumeAt.
 
 // Parameter range [t0, t1] of p + t d inside the unit box (t0 > t1: it misses).
 vec2 unitBoxSpan(vec3 p, vec3 d)
@@ -31,16 +32,6 @@ vec2 unitBoxSpan(vec3 p, vec3 d)
     return span;
 }
 
-// Light `light`'s channel of the light volume at `q`: in layer light / 4, its z clamped to that
-// layer's texel centres (as the edge clamp of a single layer).
-float heldLight(vec3 q, int light)
-{
-    int layer = light / 4;
-    float nz = float(textureSize(volren_lightVolume, 0).z) / float(volren_lightLayers);
-    vec3 at = vec3(q.xy, (clamp(q.z * nz, 0.5, nz - 0.5) + float(layer) * nz) / (float(volren_lightLayers) * nz));
-    return clamp(texture(volren_lightVolume, at)[light - 4 * layer], 0.0, 1.0);
-}
-
 // Light `light`'s transmittance at `q`, where the way towards it along `d` stays in the box
 // over the parameter length `inside`. The texels hold it at their centres, half a texel in from
 // the faces: at a face the light has crossed that half texel more, so there (`onFace`) it is
@@ -50,9 +41,9 @@ float transmittanceFrom(vec3 q, vec3 d, float inside, int light, bool onFace)
 {
     vec3 size = vec3(textureSize(volren_lightVolume, 0)) / vec3(1.0, 1.0, float(volren_lightLayers));  // one layer's
     float texel = 1.0 / length(d * size);  // parameter per texel
-    if (!onFace || inside < 1.5 * texel) return heldLight(q, light);
-    float a = heldLight(q + d * (0.5 * texel), light);
-    float b = heldLight(q + d * (1.5 * texel), light);
+    if (!onFace || inside < 1.5 * texel) return volren_lightVolumeAt(volren_lightVolume, q, light, volren_lightLayers);
+    float a = volren_lightVolumeAt(volren_lightVolume, q + d * (0.5 * texel), light, volren_lightLayers);
+    float b = volren_lightVolumeAt(volren_lightVolume, q + d * (1.5 * texel), light, volren_lightLayers);
     if (a <= 0.0 || b <= 0.0) return a;
     return a * sqrt(min(a / b, 1.0));
 }

@@ -433,6 +433,22 @@ TEST(ReferenceShadows, NullShadowingIsTheUnshadowedImageBitForBitAndUnknownOnesA
 }
 
 
+/// `v` through `tf` with exact shadows (Shadowing ray), lit by ambient light only (`ambient`,
+/// and a black light from +z), its ambient term scaled by the occlusion when asked (cone_ao).
+ReferenceScene ambientOnly(Volume* v, TransferFunction* tf, double ambient, bool occlusion)
+{
+    auto node = makeVolumeNode(v, tf);
+    litByLambert(*node, "ray");
+    node->settings.ambient = ambient;
+    osg::ref_ptr<osg::Group> root = withNode(node);
+    osg::ref_ptr<osg::LightSource> light = lightAt(osg::Vec4(0, 0, 1, 0));
+    light->getLight()->setDiffuse(osg::Vec4(0, 0, 0, 1));
+    root->addChild(light.get());
+    ReferenceScene content = ReferenceScene::collect(*root);
+    content.volumes[0].occlusion = occlusion;
+    return content;
+}
+
 TEST(ReferenceShadows, AmbientOcclusionDeepInAHomogeneousMediumIsExpMinusSigmaTimesItsReach)
 {
     // A 40^3 block as opaque everywhere (alpha 0.08 per voxel), white only in the layer 20-21
@@ -449,16 +465,7 @@ TEST(ReferenceShadows, AmbientOcclusionDeepInAHomogeneousMediumIsExpMinusSigmaTi
     ReferenceOptions options;
     options.tolerance = 1e-5;
     auto render = [&](bool occlusion) {  // exact shadows, with or without ambient occlusion (cone, cone_ao)
-        auto node = makeVolumeNode(v.get(), tf.get());
-        litByLambert(*node, "ray");
-        node->settings.ambient = 0.5;
-        osg::ref_ptr<osg::Group> root = withNode(node);
-        osg::ref_ptr<osg::LightSource> light = lightAt(osg::Vec4(0, 0, 1, 0));
-        light->getLight()->setDiffuse(osg::Vec4(0, 0, 0, 1));
-        root->addChild(light.get());
-        ReferenceScene content = ReferenceScene::collect(*root);
-        content.volumes[0].occlusion = occlusion;
-        return renderReference(content, orthoPixelPerUnit(1, 1), options);
+        return renderReference(ambientOnly(v.get(), tf.get(), 0.5, occlusion), orthoPixelPerUnit(1, 1), options);
     };
     const ReferenceImage open = render(false), occluded = render(true);
     EXPECT_EQ(occluded.unconverged, 0u);
@@ -490,20 +497,11 @@ TEST(ReferenceShadows, AmbientOcclusionsFixedQuadratureIsCloseToAFinerOneAndLets
     auto tf = transferFunction({{20.0, osg::Vec4(1, 1, 1, 0)}, {120.0, osg::Vec4(1, 0.8f, 0.6f, 0.15f)},
                                 {200.0, osg::Vec4(1, 1, 1, 0.3f)}}, 0.0, 255.0);
     auto render = [&](bool occlusion, int directions, double step) {
-        auto node = makeVolumeNode(v.get(), tf.get());
-        litByLambert(*node, "ray");
-        node->settings.ambient = 1.0;
-        osg::ref_ptr<osg::Group> root = withNode(node);
-        osg::ref_ptr<osg::LightSource> light = lightAt(osg::Vec4(0, 0, 1, 0));
-        light->getLight()->setDiffuse(osg::Vec4(0, 0, 0, 1));
-        root->addChild(light.get());
-        ReferenceScene content = ReferenceScene::collect(*root);
-        content.volumes[0].occlusion = occlusion;
         ReferenceOptions options;
         options.tolerance = 1e-3;
         options.occlusionDirections = directions;
         options.occlusionStep = step;
-        return renderReference(content, orthoFromPlusZ(5, 20.0), options);
+        return renderReference(ambientOnly(v.get(), tf.get(), 1.0, occlusion), orthoFromPlusZ(5, 20.0), options);
     };
     const ReferenceImage open = render(false, 12, 0.25), coarse = render(true, 12, 0.25), fine = render(true, 24, 0.125);
     EXPECT_EQ(coarse.unconverged, 0u);

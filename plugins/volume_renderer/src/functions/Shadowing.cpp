@@ -102,7 +102,7 @@ void registerShadowingFunctions(ShaderFunctionRegistry& registry)
     registry.add({.slot = "Shadowing",
                   .name = "light_volume",
                   .buildFile = "Shadowing/light_volume_build.comp",
-                  .includes = {"Shadowing/geometry_shadow.glsl"},
+                  .includes = {"Shadowing/geometry_shadow.glsl", "Shadowing/light_volume_layers.glsl"},
                   .uniforms = bindings::geometry + bindings::lights + geometryShadowUniforms +
                               std::vector<UniformDecl>{{"volren_shadowStep", "float", ""}, {"volren_referenceStep", "float", ""}},
                   .textures = {{"volren_lightVolume", "sampler3D"}, geometryShadowTexture},

@@ -3,11 +3,8 @@
 // the light first.
 #include "LightVolume.h"
 
-#include <osg/Notify>
-
 #include <algorithm>
 #include <cmath>
-#include <mutex>
 #include <numeric>
 
 namespace volren {
@@ -51,14 +48,6 @@ std::vector<BuildDispatch> lightVolumePlan(const std::vector<LightInfo>& lights,
     osg::Vec3i dims = texture;  // one layer's
     dims.z() /= lightVolumeLayers(lights.size());
     std::vector<BuildDispatch> plan;
-    if (lights.size() > std::size_t(maxLights)) {
-        static std::once_flag told;  // the plan is made at every rebuild
-        std::call_once(told, [&] {
-            OSG_NOTICE << "volren: a light volume holds " << maxLights << " lights; lights " << maxLights + 1 << "-"
-                       << lights.size() << " light its volume unshadowed (shadowing=ray or cone shadow every light)"
-                       << std::endl;
-        });
-    }
     for (std::size_t i = 0; i < lights.size() && i < std::size_t(maxLights); ++i) {
         // Where the light is in texture space (a point light) or where it comes from (directional).
         const osg::Vec4d light = lightInTextureSpace(lights[i], worldSize);

@@ -12,6 +12,8 @@
 #include <osg/MatrixTransform>
 
 #include <algorithm>
+#include <stdexcept>
+#include <string>
 
 namespace volren {
 
@@ -44,7 +46,15 @@ void ShadowedGeometry::cull(osgUtil::CullVisitor& cv, const void* node, const os
         _program = new osg::Program;
         _program->setName("volren shadowed geometry");
         _program->addShader(new osg::Shader(osg::Shader::VERTEX, registry.read("Shadowing/shadowed_geometry.vert")));
-        _program->addShader(new osg::Shader(osg::Shader::FRAGMENT, registry.read("Shadowing/shadowed_geometry.frag")));
+        // The light volume's layered read, shared with Shadowing/light_volume, after the declarations.
+        std::string fragment = registry.read("Shadowing/shadowed_geometry.frag");
+        const std::string mark = "out vec4 volren_fragColour;\n";
+        const std::size_t at = fragment.find(mark);
+        if (at == std::string::npos)
+            throw std::runtime_error("Shadowing/shadowed_geometry.frag: no '" + mark.substr(0, mark.size() - 1) +
+                                     "' to put Shadowing/light_volume_layers.glsl after");
+        fragment.insert(at + mark.size(), registry.read("Shadowing/light_volume_layers.glsl"));
+        _program->addShader(new osg::Shader(osg::Shader::FRAGMENT, fragment));
         _program->addBindFragDataLocation("volren_fragColour", 0);
     }
     Pass& pass = _passes[{cv.getCurrentCamera(), node}];
