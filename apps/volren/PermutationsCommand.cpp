@@ -177,15 +177,16 @@ std::string compileOnly(const Composition& composition, OffscreenRenderer& rende
         problem = "link failed: " + ShaderCompositor::explainLog(log, *program);
     }
     program->program->releaseGLObjects(renderer.state());
-    if (const osg::Program* build = program->buildProgram.get(); build && problem.empty()) {  // its compute build
-        build->compileGLObjects(*renderer.state());
-        const osg::Program::PerContextProgram* buildPcp = build->getPCP(*renderer.state());
+    for (const auto& [member, build] : program->builds) {  // its compute builds
+        if (!problem.empty()) break;
+        build.program->compileGLObjects(*renderer.state());
+        const osg::Program::PerContextProgram* buildPcp = build.program->getPCP(*renderer.state());
         if (!buildPcp || !buildPcp->isLinked()) {
             std::string log;
-            build->getGlProgramInfoLog(renderer.state()->getContextID(), log);
-            problem = "build program link failed: " + ShaderCompositor::explainLog(log, program->buildSourceNames);
+            build.program->getGlProgramInfoLog(renderer.state()->getContextID(), log);
+            problem = "build program link failed: " + ShaderCompositor::explainLog(log, build.sourceNames);
         }
-        build->releaseGLObjects(renderer.state());
+        build.program->releaseGLObjects(renderer.state());
     }
     osg::flushAllDeletedGLObjects(renderer.state()->getContextID());  // no frames flush them here
     return problem;

@@ -23,6 +23,14 @@ struct Binding
     std::string memberSuffix;  ///< "_v<member>", or "" for the set's own (and single volumes)
 };
 
+/// The compute program that builds a volume's auxiliary data (ShaderFunction::buildFile).
+struct BuildProgram
+{
+    osg::ref_ptr<osg::Program> program;   ///< the compute stage alone
+    std::string source;                   ///< its composed source
+    std::vector<std::string> sourceNames;  ///< GLSL source-string number -> file
+};
+
 /// A program for one composition, with what binding needs.
 struct ComposedProgram
 {
@@ -33,13 +41,13 @@ struct ComposedProgram
     std::string fragmentSource;               ///< the composed fragment source
     std::vector<std::string> sourceNames;     ///< GLSL source-string number -> file
     bool writesDepth = false;                 ///< the traversal reports surface hits
-    /// The compute program of an implementation's `buildFile` (null when none has one), with its
-    /// source and source-string names; it shares the ray caster's uniform and sampler names.
-    osg::ref_ptr<osg::Program> buildProgram;
-    std::string buildSource;
-    std::vector<std::string> buildSourceNames;
+    /// The compute programs of the implementations with a `buildFile`, by member (-1: a single
+    /// volume's own; k: member k of a set); each shares the ray caster's uniform and sampler names.
+    std::map<int, BuildProgram> builds;
     /// Whether an implementation of this program needs `aux`.
     bool needs(AuxData aux) const;
+    /// The build program of `member` (-1: a single volume), or null when it has none.
+    const BuildProgram* build(int member) const;
 };
 
 /// Assembles one GLSL program per composition from shader-function files and caches it.

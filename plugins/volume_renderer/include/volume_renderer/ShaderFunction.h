@@ -125,7 +125,7 @@ struct ShaderFunction
     std::string vertexFile = {};             ///< vertex source (RaySetup only), relative path
     /// A compute shader (its main) that builds this implementation's auxiliary volume on the GPU
     /// through the composition's VolumeStorage, Reconstruction, Classification and ClipPosition;
-    /// the compositor composes it with them (ComposedProgram::buildProgram). Empty: none.
+    /// the compositor composes it with them (ComposedProgram::builds). Empty: none.
     std::string buildFile = {};
     std::vector<std::string> includes = {};  ///< helper files emitted (once) before `file`
     std::vector<UniformDecl> uniforms = {};  ///< uniforms it reads

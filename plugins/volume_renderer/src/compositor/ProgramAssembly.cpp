@@ -255,12 +255,19 @@ std::pair<std::string, std::string> ProgramAssembly::templateSources(const SlotI
                 body + "}\n"};
 }
 
+std::set<std::string> ProgramAssembly::memberSharedNames(const std::string& numerics) const
+{
+    // What a set defines once for all members: the numerics and the ray setup's helpers.
+    std::set<std::string> shared = definedNames(numerics);
+    for (const std::string& n : definedNames(file("RaySetup/ray.glsl"))) shared.insert(n);
+    return shared;
+}
+
 void ProgramAssembly::appendMembers(const std::string& numerics, const std::string& slotDeclarations)
 {
     // Each member's slots, prototypes and glue, renamed apart by its suffix except for what the
     // set defines once; then, for every function the glue defines, a dispatcher over the members.
-    std::set<std::string> shared = definedNames(numerics);
-    for (const std::string& n : definedNames(file("RaySetup/ray.glsl"))) shared.insert(n);
+    const std::set<std::string> shared = memberSharedNames(numerics);
     const ShaderFunction* glue = lookup("MultiVolume", "member");
     const std::string glueSource = source(glue);
     for (std::size_t k = 0; k < _composition.members.size(); ++k) {
@@ -308,33 +315,45 @@ std::string ProgramAssembly::memberDispatchers(const std::string& glue) const
 void ProgramAssembly::assembleBuild(const std::string& declarations, const std::string& numerics,
                                     const std::string& slotDeclarations)
 {
-    // The compute program of a single volume's implementation that builds auxiliary data: the
-    // same declarations (it reads the ray caster's uniforms and textures) and the slots that
-    // sample and classify the volume, then the build file's main().
-    const ShaderFunction* builder = nullptr;
-    for (const Binding& b : _result.bindings)
-        if (b.member < 0 && !b.function->buildFile.empty()) builder = b.function;
-    if (!builder) return;
-    std::ostringstream src;
-    auto add = [&](const std::string& name, const std::string& text) {
-        const int index = int(_result.buildSourceNames.size());
-        _result.buildSourceNames.push_back(name);
-        src << "// ---- " << name << " ----\n#line 1 " << index << "\n" << text << "\n";
-    };
-    src << header();
-    _result.buildSourceNames.push_back("<generated declarations>");
-    src << declarations;
-    add("common/numerics.glsl", numerics);
-    add("slots.glsl", slotDeclarations);
-    for (const auto& [name, text] : slotSources(-1, &buildSamplingSlots())) add(name, text);
-    std::string main;
-    try {
-        main = file(builder->buildFile);
-    } catch (const std::exception& e) {
-        throw std::runtime_error("slot " + builder->slot + ", implementation " + builder->name + ": " + e.what());
+    // The compute program of each implementation that builds auxiliary data, a single volume's
+    // (member -1) or a set member's: the same declarations (it reads the ray caster's uniforms
+    // and textures) and the slots that sample and classify the volume, then the build file's
+    // main(). A member's are renamed by its suffix, as in the ray caster, but for the uniforms
+    // the build file declares itself (the C++ side sets them per dispatch by name).
+    for (int member = -1; member < int(_composition.members.size()); ++member) {
+        const ShaderFunction* builder = nullptr;
+        for (const Binding& b : _result.bindings)
+            if (b.member == member && !b.function->buildFile.empty()) builder = b.function;
+        if (!builder) continue;
+        std::string main;
+        try {
+            main = file(builder->buildFile);
+        } catch (const std::exception& e) {
+            throw std::runtime_error("slot " + builder->slot + ", implementation " + builder->name + ": " + e.what());
+        }
+        const std::string suffix = member < 0 ? "" : "_v" + std::to_string(member);
+        const std::string of = member < 0 ? "" : " (member " + std::to_string(member) + ")";
+        std::set<std::string> shared = memberSharedNames(numerics);
+        static const std::regex ownUniform(R"(\buniform\s+\w+\s+(volren_\w+))");
+        for (auto it = std::sregex_iterator(main.begin(), main.end(), ownUniform); it != std::sregex_iterator(); ++it)
+            shared.insert((*it)[1].str());
+        auto renamed = [&](const std::string& text) { return member < 0 ? text : renameForMember(text, shared, suffix); };
+        BuildProgram& build = _result.builds[member];
+        std::ostringstream src;
+        auto add = [&](const std::string& name, const std::string& text) {
+            const int index = int(build.sourceNames.size());
+            build.sourceNames.push_back(name + of);
+            src << "// ---- " << name << of << " ----\n#line 1 " << index << "\n" << text << "\n";
+        };
+        src << header();
+        build.sourceNames.push_back("<generated declarations>");
+        src << declarations;
+        add("common/numerics.glsl", numerics);
+        add("slots.glsl", renamed(slotDeclarations));
+        for (const auto& [name, text] : slotSources(member, &buildSamplingSlots())) add(name, renamed(text));
+        add(builder->buildFile, renamed(main));
+        build.source = src.str();
     }
-    add(builder->buildFile, main);
-    _result.buildSource = src.str();
 }
 
 const ShaderFunction* ProgramAssembly::assemble()

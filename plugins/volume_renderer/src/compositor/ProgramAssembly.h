@@ -15,7 +15,8 @@ namespace volren {
 /// string 0 is the generated header and declarations, then the common files, then one string
 /// per implementation (template instances renamed apart), then, for a multi-volume set, each
 /// member's slots renamed by its suffix and the dispatchers over the members. When an
-/// implementation has a build file, also the source of its compute program.
+/// implementation has a build file, also the source of its compute program (one per member
+/// with one, for a set).
 class ProgramAssembly
 {
 public:
@@ -35,6 +36,8 @@ private:
     Sources slotSources(int member, const std::set<std::string>* only = nullptr) const;
     std::pair<std::string, std::string> templateSources(const SlotInfo& slot, const std::vector<const Binding*>& mine,
                                                         Sources& out) const;
+    /// The names a set defines once, which members' sources keep unrenamed.
+    std::set<std::string> memberSharedNames(const std::string& numerics) const;
     void appendMembers(const std::string& numerics, const std::string& slotDeclarations);
     /// For each function `volren_memberX` the member glue source defines, `volren_setMemberX`
     /// with the member index first, calling that member's copy.

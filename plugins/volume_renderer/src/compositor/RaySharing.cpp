@@ -10,10 +10,7 @@ namespace volren {
 std::string CompositionPolicy::memberKind(const Composition& composition) const
 {
     const ShaderFunction* traversal = _registry.find("RayTraversal", composition.functionFor("RayTraversal"));
-    // A Shadowing that builds auxiliary data per node (a light volume) has no build for set members.
-    const ShaderFunction* shadowing = _registry.find("Shadowing", composition.functionFor("Shadowing"));
-    if (!traversal || composition.functionFor("RaySetup") == "null" || (shadowing && !shadowing->buildFile.empty()))
-        return {};
+    if (!traversal || composition.functionFor("RaySetup") == "null") return {};
     return traversal->traits.sharesRayAs;
 }
 

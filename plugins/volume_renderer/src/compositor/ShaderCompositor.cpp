@@ -38,6 +38,12 @@ bool ComposedProgram::needs(AuxData aux) const
     return false;
 }
 
+const BuildProgram* ComposedProgram::build(int member) const
+{
+    auto it = builds.find(member);
+    return it == builds.end() ? nullptr : &it->second;
+}
+
 ShaderCompositor::ShaderCompositor(const ShaderFunctionRegistry& registry) : _registry(registry) {}
 
 std::size_t ShaderCompositor::programCount() const
@@ -110,13 +116,13 @@ std::shared_ptr<const ComposedProgram> ShaderCompositor::build(const Composition
     program->addShader(fragment);
     program->addBindFragDataLocation("volren_fragColor", 0);
     result->program = program;
-    if (!result->buildSource.empty()) {
-        osg::ref_ptr<osg::Program> build = new osg::Program;
-        build->setName(std::string(label) + " build");
-        osg::ref_ptr<osg::Shader> compute = new osg::Shader(osg::Shader::COMPUTE, result->buildSource);
-        compute->setName(std::string(label) + " build compute");
-        build->addShader(compute);
-        result->buildProgram = build;
+    for (auto& [member, build] : result->builds) {
+        const std::string name = std::string(label) + " build" + (member < 0 ? "" : " of member " + std::to_string(member));
+        build.program = new osg::Program;
+        build.program->setName(name);
+        osg::ref_ptr<osg::Shader> compute = new osg::Shader(osg::Shader::COMPUTE, build.source);
+        compute->setName(name + " compute");
+        build.program->addShader(compute);
     }
     OSG_INFO << "volren: composed program " << result->key << std::endl;
     return result;

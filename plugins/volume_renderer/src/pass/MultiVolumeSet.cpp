@@ -51,6 +51,7 @@ void updateSetProxy(VolumeProxy& proxy, std::vector<SetMember>& members, const C
                            .boxSize = size};  // the set's box, step and termination
     bindProgram(setContext, *program, set.clips, -1, textures, cull);
     proxy.hidden = true;  // until a member may show something
+    proxy.prepasses.clear();  // the members' builds of auxiliary volumes
     for (std::size_t k = 0; k < members.size(); ++k) {
         const VolumeCandidate& c = *members[k].candidate;
         const Volume& volume = *c.node->getVolume();
@@ -60,6 +61,7 @@ void updateSetProxy(VolumeProxy& proxy, std::vector<SetMember>& members, const C
         context.member = "_v" + std::to_string(k);
         context.setToMember = setTextureToScene * osg::Matrixd::inverse(memberTextureToScene);
         if (bindProgram(context, *program, parts[k].clips, int(k), textures, cull)) proxy.hidden = false;
+        for (osg::ref_ptr<osg::Node>& build : context.prepasses) proxy.prepasses.push_back(std::move(build));
     }
 }
 

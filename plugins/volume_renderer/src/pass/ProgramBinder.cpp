@@ -226,15 +226,15 @@ bool bindProgram(BindContext& context, const ComposedProgram& program,
     context.suffix.clear();
     context.instance = -1;
     // A built volume is rebuilt, before the ray caster draws, when what its build reads changed.
-    if (program.buildProgram) {
+    if (const BuildProgram* buildProgram = program.build(member)) {
         const osg::Vec3d box = context.boxSize.length2() > 0.0 ? context.boxSize : context.volume.worldSize();
         for (const BuiltVolumeKind& kind : builtVolumeKinds()) {
             if (!needs(kind.aux)) continue;
             const osg::Texture3D& t = static_cast<const osg::Texture3D&>(*context.aux.at(kind.aux));
             const osg::Vec3i dims(t.getTextureWidth(), t.getTextureHeight(), t.getTextureDepth());
             if (osg::Node* build = textures.builtVolumes().build(&context.node, kind.aux,
-                                                                 builtVolumeKey(context, mine, kind, program.buildProgram.get()),
-                                                                 program.buildProgram.get(), kind.plan(context, box, dims)))
+                                                                 builtVolumeKey(context, mine, kind, buildProgram->program.get()),
+                                                                 buildProgram->program.get(), kind.plan(context, box, dims)))
                 context.prepasses.push_back(build);
         }
     }

@@ -186,6 +186,7 @@ void VolumeScene::traverse(osg::NodeVisitor& nv)
                 osg::BoundingBox box;  // in float, as the proxy's vertices
                 for (const SetMember& m : members) box.expandBy(osg::BoundingBox(m.candidate->bound));
                 p.draw(*cv, proxy, osg::Matrix::translate(box.center()), nullptr, keys);
+                for (const SetMember& m : members) p.shadowGeometry(*cv, *m.candidate, m.chosen.composition, proxy);
                 continue;
             } catch (const std::exception& e) {
                 OSG_WARN << "volren: cannot draw the overlapping volumes '" << nodes.front()->getName()
@@ -295,10 +296,10 @@ void VolumeScene::checkPrograms(osg::State& state) const
         // Only what the last cull drew: another viewer of the same scene (a second context) has
         // not applied the programs of proxies it did not draw.
         if (!proxy->program || proxy->lastCull != _state->cull || proxy->hidden) continue;  // hidden: never applied
-        // The ray caster, and the build program of its auxiliary data where it has one.
-        const std::pair<const osg::Program*, const std::vector<std::string>*> programs[] = {
-            {proxy->program->program.get(), &proxy->program->sourceNames},
-            {proxy->program->buildProgram.get(), &proxy->program->buildSourceNames}};
+        // The ray caster, and the build programs of its auxiliary data where it has them.
+        std::vector<std::pair<const osg::Program*, const std::vector<std::string>*>> programs = {
+            {proxy->program->program.get(), &proxy->program->sourceNames}};
+        for (const auto& [member, build] : proxy->program->builds) programs.emplace_back(build.program.get(), &build.sourceNames);
         for (const auto& [program, names] : programs) {
             osg::Program::PerContextProgram* pcp = program ? program->getPCP(state) : nullptr;
             if (!pcp || pcp->isLinked()) continue;
