@@ -80,6 +80,36 @@ TEST_F(MixedShadows, AnOpaqueSquareBetweenTheLightAndTheBlockTakesItsLightWithEv
     }
 }
 
+TEST_F(MixedShadows, TheSquareTakesTheLightOfEachOfEightLights)
+{
+    // Eight lights, directional and point in turn, each blocked by the square from the left half:
+    // every one needs its own depth map (the last four's layers too), or the left half shows it.
+    osg::ref_ptr<Volume> block = constantVolume(VoxelType::UInt8, {depthVoxels, depthVoxels, depthVoxels}, 100);
+    osg::ref_ptr<TransferFunction> tf = constantTransferFunction(osg::Vec4(0.9f, 0.6f, 0.3f, float(alpha)));
+    std::vector<osg::Vec4> lights;
+    for (int i = 0; i < 8; ++i) lights.push_back(lightsAboveAndInFront[std::size_t(i % 2)]);
+    for (const char* method : {"ray", "light_volume", "cone"}) {
+        SCOPED_TRACE(method);
+        osg::ref_ptr<VolumeScene> scene = lit(block.get(), tf.get(), method, 1.0, lights);
+        scene->addChild(invisibleBound().get());
+        const Pixels open = renderOrthoFromPlusZ(scene.get(), 16, 16, 32.0);
+        scene = lit(block.get(), tf.get(), method, 1.0, lights);
+        scene->addChild(squareOverTheLeftHalf().get());
+        const Pixels shadowed = renderOrthoFromPlusZ(scene.get(), 16, 16, 32.0);
+        EXPECT_EQ(scene->geometryShadowMapDraws(), 8u) << "one map per light";
+        for (int y = 4; y < 12; ++y) {
+            for (int x = 4; x < 12; ++x) {
+                const osg::Vec4 &a = open.at(x, y), &b = shadowed.at(x, y);
+                ASSERT_GT(a.r(), 0.05f) << x << "," << y;
+                for (int c = 0; c < 3; ++c) {
+                    if (x < 8) EXPECT_LT(b[c], 1e-4f) << "left half " << x << "," << y;
+                    else EXPECT_NEAR(b[c], a[c], 1e-5) << "right half " << x << "," << y;
+                }
+            }
+        }
+    }
+}
+
 TEST_F(MixedShadows, TheLightsDepthMapIsDrawnAgainOnlyWhenTheLightTheGeometryOrTheContextChanges)
 {
     osg::ref_ptr<Volume> block = constantVolume(VoxelType::UInt8, {depthVoxels, depthVoxels, depthVoxels}, 100);

@@ -1,6 +1,7 @@
 // Shadowing implementations: the fraction of a light that reaches a sample.
 #include "CommonBindings.h"
 
+#include <volume_renderer/CompositionPolicy.h>
 #include <volume_renderer/ShaderFunctionRegistry.h>
 
 #include <volume_model/RenderSettings.h>
@@ -20,10 +21,12 @@ namespace {
 
 /// Every shadowing method reads the opaque geometry's shadow maps (Shadowing/geometry_shadow.glsl).
 // The opaque geometry's shadow maps: the ray caster's only (a light volume's build ignores them).
+// One map per light a volume uses.
+constexpr unsigned int geometryMaps = CompositionPolicy::maxLights;
 const std::vector<UniformDecl> geometryShadowUniforms = {
     {.name = "volren_geometryShadowCount", .glslType = "int", .rayCasterOnly = true},
-    {.name = "volren_geometryShadowMatrix", .glslType = "mat4", .arraySize = "4", .rayCasterOnly = true},
-    {.name = "volren_geometryShadowBias", .glslType = "float", .arraySize = "4", .rayCasterOnly = true}};
+    {.name = "volren_geometryShadowMatrix", .glslType = "mat4", .arraySize = std::to_string(geometryMaps), .rayCasterOnly = true},
+    {.name = "volren_geometryShadowBias", .glslType = "float", .arraySize = std::to_string(geometryMaps), .rayCasterOnly = true}};
 const TextureDecl geometryShadowTexture = {.name = "volren_geometryShadow", .samplerType = "sampler2DArray", .rayCasterOnly = true};
 
 /// The maps' matrices from the volume's texture space and their depth bias (half a voxel along the
@@ -33,10 +36,10 @@ void bindGeometryShadows(BindContext& c)
 {
     const std::vector<osg::Matrixd>& maps = c.geometryShadowMatrices;
     auto map = c.aux.find(AuxData::GeometryShadowMap);
-    const int count = map == c.aux.end() ? 0 : int(std::min<std::size_t>(maps.size(), 4));
+    const int count = map == c.aux.end() ? 0 : int(std::min<std::size_t>(maps.size(), geometryMaps));
     c.uniform("volren_geometryShadowCount", count);
     for (int i = 0; i < count; ++i) {
-        c.uniformElement("volren_geometryShadowMatrix", 4, unsigned(i), osg::Matrixf(maps[std::size_t(i)]));
+        c.uniformElement("volren_geometryShadowMatrix", geometryMaps, unsigned(i), osg::Matrixf(maps[std::size_t(i)]));
         // Depth per texture unit along the light at this point: the map's depth slope, from the
         // matrix's third row against its fourth (w), at the box centre.
         const osg::Matrixd& m = maps[std::size_t(i)];
@@ -50,7 +53,7 @@ void bindGeometryShadows(BindContext& c)
             }
             bias = float(0.5 * slope);
         }
-        c.uniformElement("volren_geometryShadowBias", 4, unsigned(i), bias);
+        c.uniformElement("volren_geometryShadowBias", geometryMaps, unsigned(i), bias);
     }
     // A sampler must name a texture of its type on its own unit even where it is never read.
     static const osg::ref_ptr<osg::Texture2DArray> none = [] {

@@ -3,6 +3,8 @@
 // camera that traverses the VolumeScene's children.
 #include "GeometryShadowMaps.h"
 
+#include <volume_renderer/CompositionPolicy.h>
+
 #include <osg/ColorMask>
 #include <osg/Geometry>
 #include <osg/Notify>
@@ -12,13 +14,10 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
-#include <mutex>
 
 namespace volren {
 
 namespace {
-
-constexpr std::size_t maxLights = 4;
 
 /// Traverses a VolumeScene's children (not the scene's own cull, which would draw its volumes)
 /// under the map camera.
@@ -156,14 +155,8 @@ GeometryShadowMaps::GeometryShadowMaps() : _texture(new osg::Texture2DArray)
 void GeometryShadowMaps::cull(osgUtil::CullVisitor& cv, osg::Group& scene, const std::vector<LightInfo>& lights,
                               const osg::BoundingBoxd& receivers)
 {
-    const std::size_t n = std::min(lights.size(), maxLights);
-    if (lights.size() > maxLights) {
-        static std::once_flag told;  // culled every frame
-        std::call_once(told, [&] {
-            OSG_NOTICE << "volren: opaque geometry shadows volumes from the first " << maxLights << " lights only; lights "
-                       << maxLights + 1 << "-" << lights.size() << " pass through it" << std::endl;
-        });
-    }
+    // Volumes use the scene's first CompositionPolicy::maxLights lights (the analysis says so).
+    const std::size_t n = std::min<std::size_t>(lights.size(), CompositionPolicy::maxLights);
     const osg::Matrixd zero(0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0);
     _matrices.assign(n, zero);
     if (n == 0 || !receivers.valid()) return;

@@ -15,7 +15,7 @@
 
 namespace volren {
 
-/// One depth layer per light (the first four) of the opaque geometry below a VolumeScene,
+/// One depth layer per light (the first eight, all that volumes use) of the opaque geometry below a VolumeScene,
 /// drawn by pre-render cameras in the frames where it changed: a light's map is drawn again
 /// only when its frustum, the drawables reached below the scene, their matrices or what their
 /// arrays' and primitive sets' dirty() counts change (or the context has no map yet).
