@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <sstream>
 
 namespace volren {
@@ -47,6 +48,22 @@ void RenderSettingsPanel::setFade(int axis, double fraction)
     apply(weightKeys[axis], fraction > 0.0 ? text.str() : "none");
 }
 
+const std::vector<SettingSlider>& RenderSettingsPanel::shadowSliders()
+{
+    static const std::vector<SettingSlider> sliders = {
+        {"shadow step factor", "shadowStepFactor", 0.25f, 8.0f, true},
+        {"shadow cutoff", "shadowCutoff", 1e-4f, 0.5f, true},
+        {"light volume scale", "lightVolumeScale", 0.1f, 1.0f, false},
+        {"cone angle (degrees)", "coneAngle", 0.5f, 90.0f, true},
+        {"cone start (voxels)", "coneStart", 0.0f, 8.0f, false},
+        {"cone step growth", "coneStepGrowth", 0.25f, 4.0f, true},
+        {"cone filter sigma (voxels)", "coneFilterSigma", 0.0f, 3.0f, false},
+        {"occlusion distance (voxels)", "aoDistance", 1.0f, 64.0f, true},
+        {"anisotropy g", "anisotropy", -0.9f, 0.9f, false},
+    };
+    return sliders;
+}
+
 void RenderSettingsPanel::draw()
 {
     ImGui::SetNextWindowSize(ImVec2(400, 420), ImGuiCond_FirstUseEver);
@@ -79,17 +96,16 @@ void RenderSettingsPanel::draw()
         apply("earlyTermination", v.str());
     }
     // Shadows and scattering (Ctrl + drag in the view turns the lights).
-    auto slider = [this](const char* label, const char* key, double value, float lo, float hi, bool logarithmic) {
-        float v = float(value);
-        if (ImGui::SliderFloat(label, &v, lo, hi, "%.3f", logarithmic ? ImGuiSliderFlags_Logarithmic : 0)) {
-            std::ostringstream text;
-            text << v;
-            apply(key, text.str());
+    if (ImGui::CollapsingHeader("Shadows and scattering", ImGuiTreeNodeFlags_DefaultOpen)) {
+        for (const SettingSlider& s : shadowSliders()) {
+            float v = float(std::strtod(_node->settings.get(s.key).c_str(), nullptr));
+            if (ImGui::SliderFloat(s.label, &v, s.lo, s.hi, "%.3f", s.logarithmic ? ImGuiSliderFlags_Logarithmic : 0)) {
+                std::ostringstream text;
+                text << v;
+                apply(s.key, text.str());
+            }
         }
-    };
-    slider("shadow step factor", "shadowStepFactor", _node->settings.shadowStepFactor, 0.25f, 8.0f, true);
-    slider("light volume scale", "lightVolumeScale", _node->settings.lightVolumeScale, 0.1f, 1.0f, false);
-    slider("anisotropy g", "anisotropy", _node->settings.anisotropy, -0.9f, 0.9f, false);
+    }
     int cell = _node->settings.macrocellSize;
     if (ImGui::SliderInt("macrocell size", &cell, 1, 64, "%d voxels", ImGuiSliderFlags_Logarithmic))
         apply("macrocellSize", std::to_string(cell));

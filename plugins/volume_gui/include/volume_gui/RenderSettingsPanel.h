@@ -7,11 +7,20 @@
 
 namespace volren {
 
+/// One numeric setting the settings panel shows as a slider over [lo, hi].
+struct SettingSlider
+{
+    const char* label;
+    const char* key;  ///< RenderSettings key
+    float lo, hi;
+    bool logarithmic;
+};
+
 /// The settings of one VolumeNode as an ImGui window ("Volume settings"): traversal,
 /// reconstruction, gradient, illumination, shadowing and acceleration (from the implementation
 /// names the caller offers, e.g. the renderer's registry), sample rate, early termination, the
-/// shadow step factor, light volume scale and scattering anisotropy, clipping on or off, and the
-/// spatial weighting per axis (a fade of both ends, or any curve as text). Every
+/// shadowing methods' parameters and scattering anisotropy (shadowSliders), clipping on or off,
+/// and the spatial weighting per axis (a fade of both ends, or any curve as text). Every
 /// change goes through RenderSettings::set, so it is validated like `--set`; the renderer picks
 /// it up in the next frame.
 class RenderSettingsPanel
@@ -29,6 +38,9 @@ public:
     double fade(int axis) const;
     /// Weighs axis `axis` by a fade of both ends over `fraction` of it (0: no weighting).
     void setFade(int axis, double fraction);
+    /// The sliders of the shadowing methods' parameters (shadow rays, light volume, cones and
+    /// their ambient occlusion) and of the phase function's anisotropy.
+    static const std::vector<SettingSlider>& shadowSliders();
 
 private:
     void apply(const std::string& key, const std::string& value);
