@@ -263,19 +263,18 @@ std::set<std::string> ProgramAssembly::memberSharedNames(const std::string& nume
     return shared;
 }
 
-void ProgramAssembly::appendMembers(const std::string& numerics, const std::string& slotDeclarations)
+void ProgramAssembly::appendMembers(const std::string& slotDeclarations)
 {
     // Each member's slots, prototypes and glue, renamed apart by its suffix except for what the
     // set defines once; then, for every function the glue defines, a dispatcher over the members.
-    const std::set<std::string> shared = memberSharedNames(numerics);
     const ShaderFunction* glue = lookup("MultiVolume", "member");
     const std::string glueSource = source(glue);
     for (std::size_t k = 0; k < _composition.members.size(); ++k) {
         const std::string suffix = "_v" + std::to_string(k);
         const std::string of = " (member " + std::to_string(k) + ")";
-        append("slots.glsl" + of, renameForMember(slotDeclarations, shared, suffix));
-        for (const auto& [name, text] : slotSources(int(k))) append(name + of, renameForMember(text, shared, suffix));
-        append(glue->file + of, renameForMember(glueSource, shared, suffix));
+        append("slots.glsl" + of, renameForMember(slotDeclarations, _memberShared, suffix));
+        for (const auto& [name, text] : slotSources(int(k))) append(name + of, renameForMember(text, _memberShared, suffix));
+        append(glue->file + of, renameForMember(glueSource, _memberShared, suffix));
     }
     append("<MultiVolume dispatchers over " + std::to_string(_composition.members.size()) + " members>",
            memberDispatchers(glueSource));
@@ -333,10 +332,11 @@ void ProgramAssembly::assembleBuild(const std::string& declarations, const std::
         }
         const std::string suffix = member < 0 ? "" : "_v" + std::to_string(member);
         const std::string of = member < 0 ? "" : " (member " + std::to_string(member) + ")";
-        std::set<std::string> shared = memberSharedNames(numerics);
+        std::set<std::string> shared = _memberShared;  // a member's: and the build file's own uniforms
         static const std::regex ownUniform(R"(\buniform\s+\w+\s+(volren_\w+))");
-        for (auto it = std::sregex_iterator(main.begin(), main.end(), ownUniform); it != std::sregex_iterator(); ++it)
-            shared.insert((*it)[1].str());
+        if (member >= 0)
+            for (auto it = std::sregex_iterator(main.begin(), main.end(), ownUniform); it != std::sregex_iterator(); ++it)
+                shared.insert((*it)[1].str());
         auto renamed = [&](const std::string& text) { return member < 0 ? text : renameForMember(text, shared, suffix); };
         BuildProgram& build = _result.builds[member];
         std::ostringstream src;
@@ -379,7 +379,10 @@ const ShaderFunction* ProgramAssembly::assemble()
             throw std::runtime_error(name + ": " + e.what());
         }
     }
-    if (!_composition.members.empty()) appendMembers(numerics, slotDeclarations);
+    if (!_composition.members.empty()) {
+        _memberShared = memberSharedNames(numerics);
+        appendMembers(slotDeclarations);
+    }
     _result.fragmentSource = _src.str();
     assembleBuild(decls, numerics, slotDeclarations);
     return _raySetup;

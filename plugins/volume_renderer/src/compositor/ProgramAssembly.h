@@ -38,7 +38,8 @@ private:
                                                         Sources& out) const;
     /// The names a set defines once, which members' sources keep unrenamed.
     std::set<std::string> memberSharedNames(const std::string& numerics) const;
-    void appendMembers(const std::string& numerics, const std::string& slotDeclarations);
+    /// Each member's sources, renamed apart (but for _memberShared).
+    void appendMembers(const std::string& slotDeclarations);
     /// For each function `volren_memberX` the member glue source defines, `volren_setMemberX`
     /// with the member index first, calling that member's copy.
     std::string memberDispatchers(const std::string& glue) const;
@@ -49,6 +50,7 @@ private:
     ComposedProgram& _result;
     const ShaderFunction* _raySetup = nullptr;
     std::ostringstream _src;
+    std::set<std::string> _memberShared;  ///< a set's: memberSharedNames(), computed once
 };
 
 }  // namespace volren
