@@ -38,6 +38,22 @@ protected:
         camera.projection = osg::Matrixd::ortho(-h, h, -h, h, 1.0, 2.0 * distance);
         return camera;
     }
+    /// The block (pixels 4..11, 2 units each; x < 0 is pixels 4..7), lit in `open`, keeps its
+    /// coverage in `shadowed`; there its left half is black and its right half as in `open`.
+    static void expectLeftHalfDark(const Pixels& open, const Pixels& shadowed)
+    {
+        for (int y = 4; y < 12; ++y) {
+            for (int x = 4; x < 12; ++x) {
+                const osg::Vec4 &a = open.at(x, y), &b = shadowed.at(x, y);
+                ASSERT_GT(a.r(), 0.05f) << x << "," << y;  // lit without the square
+                EXPECT_NEAR(b.a(), a.a(), 1e-6) << "coverage " << x << "," << y;
+                for (int c = 0; c < 3; ++c) {
+                    if (x < 8) EXPECT_LT(b[c], 1e-4f) << "left half " << x << "," << y;
+                    else EXPECT_NEAR(b[c], a[c], 1e-5) << "right half " << x << "," << y;
+                }
+            }
+        }
+    }
     /// An empty group with the square's bounding sphere (so renderOrthoFromPlusZ frames alike).
     static osg::ref_ptr<osg::Node> invisibleBound()
     {
@@ -64,18 +80,7 @@ TEST_F(MixedShadows, AnOpaqueSquareBetweenTheLightAndTheBlockTakesItsLightWithEv
             scene->addChild(squareOverTheLeftHalf().get());
             const Pixels shadowed = renderOrthoFromPlusZ(scene.get(), 16, 16, 32.0);
             EXPECT_NE(scene->compositionKeys()[0].find("geometryShadows=1;"), std::string::npos) << "the maps compiled in";
-            // The block covers pixels 4..11 (2 units each); x < 0 is pixels 4..7.
-            for (int y = 4; y < 12; ++y) {
-                for (int x = 4; x < 12; ++x) {
-                    const osg::Vec4 &a = open.at(x, y), &b = shadowed.at(x, y);
-                    ASSERT_GT(a.r(), 0.05f) << x << "," << y;  // lit without the square
-                    EXPECT_NEAR(b.a(), a.a(), 1e-6) << "coverage " << x << "," << y;
-                    for (int c = 0; c < 3; ++c) {
-                        if (x < 8) EXPECT_LT(b[c], 1e-4f) << "left half " << x << "," << y;
-                        else EXPECT_NEAR(b[c], a[c], 1e-5) << "right half " << x << "," << y;
-                    }
-                }
-            }
+            expectLeftHalfDark(open, shadowed);
         }
     }
 }
@@ -97,16 +102,7 @@ TEST_F(MixedShadows, TheSquareTakesTheLightOfEachOfEightLights)
         scene->addChild(squareOverTheLeftHalf().get());
         const Pixels shadowed = renderOrthoFromPlusZ(scene.get(), 16, 16, 32.0);
         EXPECT_EQ(scene->geometryShadowMapDraws(), 8u) << "one map per light";
-        for (int y = 4; y < 12; ++y) {
-            for (int x = 4; x < 12; ++x) {
-                const osg::Vec4 &a = open.at(x, y), &b = shadowed.at(x, y);
-                ASSERT_GT(a.r(), 0.05f) << x << "," << y;
-                for (int c = 0; c < 3; ++c) {
-                    if (x < 8) EXPECT_LT(b[c], 1e-4f) << "left half " << x << "," << y;
-                    else EXPECT_NEAR(b[c], a[c], 1e-5) << "right half " << x << "," << y;
-                }
-            }
-        }
+        expectLeftHalfDark(open, shadowed);
     }
 }
 

@@ -4,6 +4,7 @@
 // boxes lit by a headlight (Lambert, zero gradients: every sample's normal faces the light):
 // a sample of box m at distance s_m below m's face towards the light emits c_m exp(-sigma_m s_m).
 // The expectation is that integral along the view ray, summed numerically at 1/64 unit.
+#include "FortyUnitView.h"
 #include "RenderFixture.h"
 #include "TestData.h"
 
@@ -91,16 +92,6 @@ protected:
         source->getLight()->setDiffuse(osg::Vec4(1, 1, 1, 1));  // OSG's default is 0.8
         s->addChild(source.get());
         return s;
-    }
-
-    static const osg::Vec4& pixelAt(const Pixels& p, double x, double y)
-    {
-        return p.at(int(std::floor(x + 20.0)), int(std::floor(y + 20.0)));
-    }
-
-    static void expectNear(const osg::Vec4& got, const osg::Vec4d& want, double tolerance, const std::string& what)
-    {
-        for (int c = 0; c < 4; ++c) EXPECT_NEAR(got[c], want[c], tolerance) << what << ", channel " << c;
     }
 };
 

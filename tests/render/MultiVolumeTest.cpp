@@ -2,6 +2,7 @@
 // program): where they overlap their media add. Closed forms of the emission-absorption
 // integral through two overlapping homogeneous boxes, with and without an opaque square inside
 // the overlap; and the scene analysis that decides which volumes form a set.
+#include "FortyUnitView.h"
 #include "RenderFixture.h"
 #include "TestData.h"
 
@@ -79,18 +80,7 @@ protected:
         scene->addChild(placed(nodeB.get(), {4, 0, 4}));
         return scene;
     }
-
-    /// Pixel of world point (x, y) in a 40x40 orthographic view 40 units high.
-    static const osg::Vec4& pixelAt(const Pixels& p, double x, double y)
-    {
-        return p.at(int(std::floor(x + 20.0)), int(std::floor(y + 20.0)));
-    }
 };
-
-void expectNear(const osg::Vec4& got, const osg::Vec4d& expected, double tolerance, const std::string& what)
-{
-    for (int c = 0; c < 4; ++c) EXPECT_NEAR(got[c], expected[c], tolerance) << what << ", channel " << c;
-}
 
 TEST_F(MultiVolume, OverlappingMediaAddAlongOneRay)
 {
