@@ -1,11 +1,15 @@
 #!/usr/bin/env bash
 # Installs every Debian package volren needs (idempotent) and configures + builds it.
-# Usage: tools/setup.sh [--deps-only] [BUILD_DIR]
+# Usage: tools/setup.sh [--deps-only] [--target TARGET] [BUILD_DIR]
+#   --target volren builds the program and what it loads at run time (plugins, shaders, the
+#   default scene's data), no test; without it everything is built.
 set -euo pipefail
 
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 deps_only=0
+target=()
 if [ "${1:-}" = "--deps-only" ]; then deps_only=1; shift; fi
+if [ "${1:-}" = "--target" ]; then target=(--target "$2"); shift 2; fi
 build=${1:-"$here/build"}
 
 packages=(
@@ -42,4 +46,4 @@ jobs=$(nproc 2>/dev/null || echo 2)
 if [ ! -f "$build/CMakeCache.txt" ]; then
   cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo
 fi
-cmake --build "$build" -j "$jobs"
+cmake --build "$build" -j "$jobs" "${target[@]}"
