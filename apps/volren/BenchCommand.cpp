@@ -16,6 +16,7 @@
 
 #include <volume_model/DefaultScene.h>
 #include <volume_model/Requantise.h>
+#include <volume_model/SpatialWeighting.h>
 #include <volume_model/VolumeNode.h>
 
 #include <osg/GLExtensions>
@@ -95,10 +96,12 @@ std::string lightingModel(const ReferenceScene& scene, bool lighting)
         // Its spatial weighting where the renderer applies it (another picture per curve).
         const auto weighting = placed.choice.find("Weighting");
         if (weighting != placed.choice.end() && weighting->second != "null")
-            if (const auto* node = dynamic_cast<const VolumeNode*>(placed.node.get()))
+            if (const auto* node = dynamic_cast<const VolumeNode*>(placed.node.get())) {
+                const SpatialWeighting curves = spatialWeighting(node->settings);
                 for (std::size_t axis = 0; axis < 3; ++axis)
-                    if (!node->settings.weighting.axes[axis].identity())
-                        model += std::string(" weight") + "XYZ"[axis] + "=" + node->settings.weighting.axes[axis].text();
+                    if (!curves.axes[axis].identity())
+                        model += std::string(" weight") + "XYZ"[axis] + "=" + curves.axes[axis].text();
+            }
         // How it combines with the volumes it overlaps (the same media, other pictures).
         if (placed.blending == ReferenceScene::Blending::Images) model += " added";
         if (placed.blending == ReferenceScene::Blending::Maxima) model += " maximum";

@@ -192,9 +192,9 @@ std::pair<BenchRow, osg::ref_ptr<osg::Image>> runVtkPeer(const VolumeScene& scen
         {"sample_distance", step},
         {"unit_distance", volume.minSpacing()},
         {"lighting", scene.pass.lighting},
-        {"ambient", node.settings.ambient},
-        {"specular", node.settings.specular},
-        {"shininess", node.settings.shininess},
+        {"ambient", node.settings.number("ambient")},
+        {"specular", node.settings.number("specular")},
+        {"shininess", node.settings.number("shininess")},
         {"frames", frames},
         {"output", directory + "/vtk.f32"},
         {"timing", directory + "/vtk.json"}};

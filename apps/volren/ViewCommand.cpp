@@ -113,9 +113,18 @@ int viewCommand(const std::vector<std::string>& args)
             editor = std::make_unique<TransferFunctionEditor>(const_cast<TransferFunction*>(node->getTransferFunction()),
                                                               node->getVolume());
         std::map<std::string, std::vector<std::string>> choices;
-        for (const char* slot : {"RayTraversal", "Reconstruction", "Gradient", "Illumination", "Shadowing", "Acceleration"})
+        for (const char* slot :
+             {"RayTraversal", "Reconstruction", "Gradient", "Illumination", "Shadowing", "Acceleration", "Weighting"})
             choices[slot] = root->policy().choosable(slot);  // default first
-        panel = std::make_unique<RenderSettingsPanel>(node, choices);
+        // The implementations the node was drawn with in the last frame: their parameters are shown.
+        auto drawnWith = [scene = root.get(), name = node->getName()] {
+            std::map<std::string, std::string> chosen;
+            for (const auto& [drawn, program] : scene->programs())
+                if (drawn == name)
+                    for (const Binding& b : program->bindings) chosen.emplace(b.function->slot, b.function->name);
+            return chosen;
+        };
+        panel = std::make_unique<RenderSettingsPanel>(node, choices, drawnWith);
         overlay = new ImGuiOverlay([&editor, &channels, &panel, &player, scene = root.get()] {
             ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
             if (channels) channels->draw();

@@ -5,20 +5,21 @@
 //
 // Settings are written as `key "value"` pairs under the names of `volren render --set` and read
 // back through volren::applyNodeSetting (RenderSettings::set, implementation names checked
-// against the renderer's registry): every key RenderSettings::keys() lists is written, so a
-// new setting is saved without touching this file, and a file's values get the model's own
-// validation and error messages. Exceptions, because get() is made for people, not files:
-// numbers are written at full precision from the fields themselves (get() rounds to 6 digits),
-// `samplerate` is skipped (an alias of sampleFactor), and slot keys write the chosen
-// implementation itself (get() reports a forced slot as "null (forced)").
+// against the renderer's registry, parameters against their declarations): every key
+// RenderSettings::keys() lists is written, so a new setting or an implementation's new
+// parameter is saved without touching this file. Numbers are written at full precision
+// (exactNumber), `samplerate` is skipped (an alias of sampleFactor), and slot keys write the
+// chosen implementation itself (get() reports a forced slot as "null (forced)").
 #include "StreamFields.h"
 
 #include <volume_renderer/SceneSettings.h>
 
+#include <volume_model/ParameterCatalog.h>
 #include <volume_model/VolumeNode.h>
 
 #include <osgDB/ObjectWrapper>
 
+#include <algorithm>
 #include <cmath>
 
 namespace {
@@ -27,48 +28,50 @@ using namespace volren::serializers;
 using volren::RenderSettings;
 using volren::VolumeNode;
 
-/// Numeric settings written from their fields at full precision.
-const std::vector<std::pair<std::string, double RenderSettings::*>>& exactNumbers()
+/// The order release 0.1 wrote its settings in, so that the files it wrote read and write back
+/// byte for byte. Frozen: keys that came later follow it in RenderSettings::keys() order.
+const std::vector<std::string>& release01Order()
 {
-    static const std::vector<std::pair<std::string, double RenderSettings::*>> fields = {
-        {"sampleFactor", &RenderSettings::sampleDistanceFactor},
-        {"sampleDistance", &RenderSettings::sampleDistance},
-        {"earlyTermination", &RenderSettings::earlyTerminationThreshold},
-        {"isoValue", &RenderSettings::isoValue},
-        {"shadingThreshold", &RenderSettings::shadingThreshold},
-        {"ambient", &RenderSettings::ambient},
-        {"specular", &RenderSettings::specular},
-        {"shininess", &RenderSettings::shininess},
-        {"roughness", &RenderSettings::roughness},
-        {"threshold", &RenderSettings::threshold},
-        {"adaptiveTolerance", &RenderSettings::adaptiveTolerance},
-        {"shadowStepFactor", &RenderSettings::shadowStepFactor},
-        {"shadowCutoff", &RenderSettings::shadowCutoff},
-        {"lightVolumeScale", &RenderSettings::lightVolumeScale},
-        {"coneAngle", &RenderSettings::coneAngle},
-        {"coneStart", &RenderSettings::coneStart},
-        {"coneStepGrowth", &RenderSettings::coneStepGrowth},
-        {"coneFilterSigma", &RenderSettings::coneFilterSigma},
-        {"aoDistance", &RenderSettings::aoDistance},
-        {"anisotropy", &RenderSettings::anisotropy}};
-    return fields;
+    static const std::vector<std::string> keys = {
+        "sampleFactor", "sampleDistance", "earlyTermination", "macrocellSize", "adaptiveTolerance", "adaptiveSteps",
+        "anisotropy", "shadowStepFactor", "shadowCutoff", "lightVolumeScale", "coneAngle", "coneStart",
+        "coneStepGrowth", "coneFilterSigma", "aoDistance", "lod", "lodByDistance", "memoryBudgetMB", "brickSize",
+        "texturePrecision", "isoValue", "shadingThreshold", "ambient", "specular", "shininess", "roughness",
+        "threshold", "debugView", "weightX", "weightY", "weightZ", "forceNull"};
+    return keys;
+}
+
+/// A setting's value as a file holds it: numbers at full precision, else RenderSettings::get's text.
+std::string fileValue(const RenderSettings& settings, const std::string& key)
+{
+    const double* number = nullptr;
+    if (key == "sampleFactor") number = &settings.sampleDistanceFactor;
+    if (key == "sampleDistance") number = &settings.sampleDistance;
+    if (key == "earlyTermination") number = &settings.earlyTerminationThreshold;
+    if (number) return exactNumber(*number);
+    if (const volren::ParameterDecl* decl = volren::ParameterCatalog::instance().find(key);
+        decl && decl->type == volren::ParameterType::Number) {
+        const double v = settings.number(key);
+        return std::isfinite(v) ? exactNumber(v) : std::string();
+    }
+    return settings.get(key);
 }
 
 /// The settings as key/value text pairs; keys the scene decides (empty values) are left out.
 std::vector<std::pair<std::string, std::string>> settingPairs(const RenderSettings& settings)
 {
+    std::vector<std::string> order = release01Order();
+    for (const auto& entry : RenderSettings::keys())
+        if (entry.first != "samplerate" && std::find(order.begin(), order.end(), entry.first) == order.end())
+            order.push_back(entry.first);
     std::vector<std::pair<std::string, std::string>> pairs;
-    for (const auto& entry : RenderSettings::keys()) {
-        const std::string& key = entry.first;
-        if (key == "samplerate") continue;  // alias of sampleFactor
+    for (const std::string& key : order) {
         std::string value;
         if (const std::string slot = RenderSettings::slotForKey(key); !slot.empty()) {
             auto it = settings.functions.find(slot);
             if (it != settings.functions.end()) value = it->second;
         } else {
-            value = settings.get(key);
-            for (const auto& [name, field] : exactNumbers())
-                if (name == key && std::isfinite(settings.*field)) value = exactNumber(settings.*field);
+            value = fileValue(settings, key);
         }
         if (!value.empty()) pairs.emplace_back(key, value);
     }

@@ -20,28 +20,23 @@ TEST(RenderSettings, SetParsesEveryKey)
     EXPECT_NE(s, RenderSettings{});
 }
 
-TEST(RenderSettings, AccelerationSettingsReadBackAsTheyWereSet)
+TEST(RenderSettings, StorageSettingsReadBackAsTheyWereSet)
 {
     RenderSettings s;
     std::string error;
-    ASSERT_TRUE(s.set("adaptiveTolerance", "0.01", error)) << error;
-    ASSERT_TRUE(s.set("adaptiveSteps", "8", error)) << error;
     ASSERT_TRUE(s.set("lod", "2", error)) << error;
     ASSERT_TRUE(s.set("lodByDistance", "on", error)) << error;
     ASSERT_TRUE(s.set("texturePrecision", "16bit", error)) << error;
     EXPECT_EQ(s.texturePrecision, "16bit");
-    EXPECT_EQ(s.adaptiveTolerance, 0.01);
-    EXPECT_EQ(s.adaptiveSteps, 8);
     EXPECT_EQ(s.lod, 2);
     EXPECT_TRUE(s.lodByDistance);
-    for (const char* key : {"adaptiveTolerance", "adaptiveSteps", "lod", "lodByDistance", "texturePrecision"}) {
+    for (const char* key : {"lod", "lodByDistance", "texturePrecision"}) {
         RenderSettings copy;
         ASSERT_TRUE(copy.set(key, s.get(key), error)) << key << ": " << error;
         EXPECT_EQ(copy.get(key), s.get(key)) << key;
         EXPECT_NE(copy, RenderSettings{}) << key << " takes part in the comparison";
     }
-    for (auto [key, value] : {std::pair{"adaptiveTolerance", "-0.1"}, {"adaptiveTolerance", "2"}, {"adaptiveSteps", "0"},
-                              {"adaptiveSteps", "2.5"}, {"adaptiveSteps", "65"}, {"lod", "-1"}, {"lod", "17"}, {"lod", "1.5"},
+    for (auto [key, value] : {std::pair{"lod", "-1"}, {"lod", "17"}, {"lod", "1.5"},
                               {"lodByDistance", "sometimes"}, {"texturePrecision", "12bit"}}) {
         RenderSettings t;
         EXPECT_FALSE(t.set(key, value, error)) << key << "=" << value;

@@ -1,6 +1,5 @@
-// Spatial weighting curves (volume_model/SpatialWeighting.h) and their settings (weightX/Y/Z):
-// values against the piecewise-linear closed form, exact text round trips, and refusals.
-#include <volume_model/RenderSettings.h>
+// Spatial weighting curves (volume_model/SpatialWeighting.h): values against the piecewise-linear
+// closed form, exact text round trips, and refusals (their settings weightX/Y/Z: render tests).
 #include <volume_model/SpatialWeighting.h>
 
 #include <gtest/gtest.h>
@@ -55,40 +54,6 @@ TEST(SpatialWeighting, TheProductOfTheAxesScalesASample)
     EXPECT_DOUBLE_EQ(w(0.25, 0.9, 0.5), 0.25 * 1.0 * 0.75);
     EXPECT_FALSE(w.identity());
     EXPECT_TRUE(SpatialWeighting{}.identity());
-}
-
-TEST(SpatialWeighting, SettingsReadBackExactlyAndRefuseBadCurves)
-{
-    RenderSettings s;
-    std::string error;
-    ASSERT_TRUE(s.set("weightZ", "0:0,0.123456789012345:1,1:0.3", error)) << error;
-    EXPECT_EQ(s.weighting.axes[2].knots.size(), 3u);
-    EXPECT_EQ(s.weighting.axes[2].knots[1].first, 0.123456789012345);
-    EXPECT_TRUE(s.weighting.axes[0].identity());
-    RenderSettings copy;
-    ASSERT_TRUE(copy.set("weightz", s.get("weightZ"), error)) << error;
-    EXPECT_EQ(copy, s);
-    ASSERT_TRUE(s.set("weightX", "ramp:0.05", error)) << error;
-    EXPECT_EQ(s.get("weightX"), "0:0,0.05:1,0.95:1,1:0");
-    ASSERT_TRUE(s.set("weightX", "none", error)) << error;
-    EXPECT_TRUE(s.weighting.axes[0].knots.empty());
-    EXPECT_EQ(s.get("weightX"), "");
-    EXPECT_EQ(RenderSettings::slotForKey("weighting"), "Weighting");
-
-    std::string many;
-    for (int i = 0; i <= int(WeightCurve::maxKnots); ++i) many += (i ? "," : "") + std::to_string(i / 20.0) + ":1";
-    const std::vector<std::pair<std::string, std::string>> bad = {
-        {"0.5", "is not u:w"},          {"0:1,x:1", "is not u:w"},     {"0:1.5", "weight must be in [0, 1]"},
-        {"0:-0.1", "weight must be in [0, 1]"}, {"1.2:1", "u must be in [0, 1]"}, {"0.5:1,0.5:0", "u must increase"},
-        {"0.6:1,0.5:0", "u must increase"},     {"ramp:0", "0 < A <= 0.5"},  {"ramp:0.7", "0 < A <= 0.5"},
-        {"0:nan", "is not u:w"},        {many, "at most 16 knots"}};
-    for (const auto& [value, why] : bad) {
-        RenderSettings r;
-        EXPECT_FALSE(r.set("weightY", value, error)) << value;
-        EXPECT_NE(error.find("weightY: "), std::string::npos) << error;
-        EXPECT_NE(error.find(why), std::string::npos) << value << ": " << error;
-        EXPECT_EQ(r, RenderSettings{}) << "a refused curve changes nothing: " << value;
-    }
 }
 
 }  // namespace

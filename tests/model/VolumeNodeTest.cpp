@@ -80,7 +80,7 @@ TEST(VolumeNodeChannels, EachChannelIsDrawnByANodeOfItsOwnVoxelsTfAndSettings)
     osg::ref_ptr<VolumeNode> node = makeDefaultVolumeNode(v.get());
     ASSERT_EQ(node->channels.size(), 2u);
     ASSERT_TRUE(node->drawsBlocks());
-    node->settings.ambient = 0.5;
+    node->settings.parameters["ambient"] = 0.5;
     std::vector<VolumeNode*> drawn = node->drawnNodes();
     ASSERT_EQ(drawn.size(), 2u);
     for (int c = 0; c < 2; ++c) {
@@ -88,7 +88,7 @@ TEST(VolumeNodeChannels, EachChannelIsDrawnByANodeOfItsOwnVoxelsTfAndSettings)
         EXPECT_EQ(one.channels(), 1);
         EXPECT_EQ(one.value(3, 0, 0), (c + 1) * 1000 + 3);  // its own channel's voxels
         EXPECT_EQ(drawn[std::size_t(c)]->getTransferFunction(), node->channels[std::size_t(c)].transferFunction.get());
-        EXPECT_EQ(drawn[std::size_t(c)]->settings.ambient, 0.5);
+        EXPECT_EQ(drawn[std::size_t(c)]->settings.parameters.at("ambient"), ParameterValue(0.5));
     }
     EXPECT_EQ(node->drawnNodes(), drawn) << "the same nodes from call to call (renderers keep their textures)";
     node->showChannels({1});

@@ -6,6 +6,7 @@
 #include <volume_model/ClipPlaneNode.h>
 #include <volume_model/ReadVolume.h>
 #include <volume_reference/ReferenceRenderer.h>
+#include <volume_renderer/ShaderFunctionRegistry.h>
 
 #include <gtest/gtest.h>
 #include <osg/LightSource>
@@ -18,6 +19,14 @@
 
 namespace volren::test {
 namespace {
+
+/// The parameters the reference reads (ambient, specular, cone start, ...) are declared by the
+/// renderer's implementations: their registry fills the model's catalog.
+class Declared : public ::testing::Environment
+{
+    void SetUp() override { ShaderFunctionRegistry::instance(); }
+};
+const auto* const declared = ::testing::AddGlobalTestEnvironment(new Declared);
 
 /// Orthographic camera looking down -z at the origin, `view` world units across.
 ReferenceCamera orthoFromPlusZ(int size, double view)
@@ -439,7 +448,7 @@ ReferenceScene ambientOnly(Volume* v, TransferFunction* tf, double ambient, bool
 {
     auto node = makeVolumeNode(v, tf);
     litByLambert(*node, "ray");
-    node->settings.ambient = ambient;
+    node->settings.parameters["ambient"] = double(ambient);
     osg::ref_ptr<osg::Group> root = withNode(node);
     osg::ref_ptr<osg::LightSource> light = lightAt(osg::Vec4(0, 0, 1, 0));
     light->getLight()->setDiffuse(osg::Vec4(0, 0, 0, 1));

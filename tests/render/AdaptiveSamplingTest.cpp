@@ -108,7 +108,7 @@ TEST_F(AdaptiveSampling, AHomogeneousBlockMatchesItsClosedFormAndTheExactMarch)
     osg::ref_ptr<VolumeNode> node = volumeNode(volume.get(), tf.get());
     node->settings.functions["Reconstruction"] = "nearest";
     node->settings.macrocellSize = 4;
-    node->settings.adaptiveSteps = 8;
+    node->settings.parameters["adaptiveSteps"] = 8;
     {
         // (A scene of its own: the fixture makes a new context for another image size.)
         osg::ref_ptr<VolumeScene> alongZ = sceneOf(node.get());
@@ -146,7 +146,7 @@ TEST_F(AdaptiveSampling, AOneVoxelPlaneInHomogeneousMaterialIsNeverSteppedOver)
                                                          {255, {1.0f, 0.1f, 0.1f, 0.9f}}},
                                                         0, 255);
     osg::ref_ptr<VolumeNode> node = volumeNode(volume.get(), tf.get());
-    node->settings.adaptiveSteps = 64;
+    node->settings.parameters["adaptiveSteps"] = 64;
     osg::ref_ptr<VolumeScene> scene = sceneOf(node.get());
     osg::ref_ptr<VolumeNode> plain = volumeNode(plateauOnly.get(), tf.get());
     osg::ref_ptr<VolumeScene> plainScene = sceneOf(plain.get());

@@ -147,7 +147,7 @@ TEST_F(BrickedVolume, EveryReconstructionAndTraversalSeesTheSingleTexturesVoxels
         for (const char* reconstruction : {"nearest", "trilinear", "tricubic"}) {
             node->settings.functions["RayTraversal"] = traversal;
             node->settings.functions["Reconstruction"] = reconstruction;
-            node->settings.isoValue = 150;
+            node->settings.parameters["isoValue"] = 150.0;
             node->settings.functions["VolumeStorage"] = "texture";
             const Pixels single = oblique(scene.get());
             EXPECT_EQ(storageOf(scene.get()), "texture");

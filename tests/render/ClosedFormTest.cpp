@@ -77,7 +77,7 @@ TEST_F(ClosedForm, IsosurfaceOfASphereWritesItsDepthWithinHalfAVoxel)
     });
     osg::ref_ptr<VolumeNode> node = volumeNode(volume.get(), greyRamp(-20, 20).get());
     node->settings.functions["RayTraversal"] = "isosurface";
-    node->settings.isoValue = 0.0;
+    node->settings.parameters["isoValue"] = 0.0;
 
     renderer(32, 32).setReadDepth(true);
     const double eyeZ = 100.0, nearPlane = 50.0, farPlane = 150.0;

@@ -192,7 +192,7 @@ TEST_F(EmptySpaceSkipping, EveryClassificationAndReconstructionThatAllowsItIsBit
             for (const char* reconstruction : {"nearest", "trilinear", "tricubic"}) {
                 node->settings.functions["Classification"] = classification;
                 node->settings.functions["Reconstruction"] = reconstruction;
-                node->settings.threshold = 0.7;
+                node->settings.parameters["threshold"] = 0.7;
                 const auto [skipping, full] = withAndWithout(node.get(), scene.get(), [&] { return oblique(scene.get()); });
                 EXPECT_TRUE(identical(skipping, full)) << classification << " " << reconstruction << (lit ? " lit" : "")
                                                        << ": max difference " << maxDifference(skipping, full);
@@ -295,7 +295,7 @@ TEST_F(EmptySpaceSkipping, ProjectionsAndIsosurfacesLeapWhatCannotPassTheirLevel
         transferFunction({{0, {0.1f, 0.2f, 0.9f, 1.0f}}, {120, {0.4f, 0.4f, 0.4f, 0.5f}}, {255, {1, 0.9f, 0.7f, 1.0f}}}, 0, 255);
     osg::ref_ptr<VolumeNode> node = volumeNode(volume.get(), tf.get(), true);
     osg::ref_ptr<VolumeScene> scene = sceneOf(node.get());
-    node->settings.isoValue = 200;  // the core's surface
+    node->settings.parameters["isoValue"] = 200.0;  // the core's surface
     for (const char* traversal : {"mip", "minip", "isosurface"})
         for (const char* reconstruction : {"nearest", "trilinear", "tricubic"})
             for (int size : {2, 8}) {
@@ -323,7 +323,7 @@ TEST_F(EmptySpaceSkipping, ARealCtWithASparseTransferFunctionIsBitIdentical)
     osg::ref_ptr<VolumeNode> node = volumeNode(volume.get(), tf.get(), true);
     osg::ref_ptr<VolumeScene> scene = sceneOf(node.get(), true);
     const osg::BoundingSphere bound = scene->getBound();
-    node->settings.isoValue = b;
+    node->settings.parameters["isoValue"] = double(b);
     for (const char* traversal : {"dvr_front_to_back", "dvr_back_to_front", "mip", "minip", "isosurface"}) {
         node->settings.functions["RayTraversal"] = traversal;
         const bool extremum = std::string(traversal).find("dvr") != 0;

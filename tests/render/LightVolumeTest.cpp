@@ -268,10 +268,10 @@ TEST_F(LightVolume, ANarrowConeIsAShadowRayThroughTheExtinctionField)
     for (const char* method : {"cone", "cone_ao"}) {
         osg::ref_ptr<VolumeScene> scene = lit(block.get(), tf.get(), method);
         VolumeNode* node = findVolumeNodes(*scene)[0];
-        node->settings.coneAngle = 0.5;  // one voxel wide for 115 voxels: level 0 all the way
-        node->settings.coneStart = 0.0;
-        node->settings.coneStepGrowth = 0.5;  // steps of half the one-voxel diameter: the shadow step
-        node->settings.ambient = 0.0;    // no ambient term for cone_ao's occlusion to scale
+        node->settings.parameters["coneAngle"] = 0.5;  // one voxel wide for 115 voxels: level 0 all the way
+        node->settings.parameters["coneStart"] = 0.0;
+        node->settings.parameters["coneStepGrowth"] = 0.5;  // steps of half the one-voxel diameter: the shadow step
+        node->settings.parameters["ambient"] = 0.0;    // no ambient term for cone_ao's occlusion to scale
         const osg::Vec4 shadowed = renderOrthoFromPlusZ(scene.get(), 8, 8, 32.0).at(4, 4);
         ASSERT_NE(scene->compositionKeys()[0].find(std::string("Shadowing=") + method), std::string::npos);
         // Steps of half a voxel from the sample: midpoints of a field linear within each.
@@ -304,7 +304,7 @@ TEST_F(LightVolume, AmbientOcclusionDeepInAHomogeneousMediumIsExpMinusSigmaTimes
     auto image = [&](const char* method) {
         osg::ref_ptr<VolumeScene> scene = lit(volume.get(), tf.get(), method);
         VolumeNode* node = findVolumeNodes(*scene)[0];
-        node->settings.ambient = 0.5;
+        node->settings.parameters["ambient"] = 0.5;
         dynamic_cast<osg::LightSource*>(scene->getChild(1))->getLight()->setDiffuse({0, 0, 0, 1});
         return renderOrthoFromPlusZ(scene.get(), 8, 8, 128.0).at(4, 4);
     };
@@ -324,8 +324,8 @@ TEST_F(LightVolume, ConeTracingFollowsShadowRaysAndRebuildsOnlyForTheTransferFun
     std::vector<double> errors;
     for (const double angle : {30.0, 10.0, 1.0}) {
         osg::ref_ptr<VolumeScene> scene = lit(volume.get(), tf.get(), "cone", 1.0, lights);
-        findVolumeNodes(*scene)[0]->settings.coneAngle = angle;
-        findVolumeNodes(*scene)[0]->settings.coneStart = 0.0;
+        findVolumeNodes(*scene)[0]->settings.parameters["coneAngle"] = double(angle);
+        findVolumeNodes(*scene)[0]->settings.parameters["coneStart"] = 0.0;
         errors.push_back(rmse(renderOrthoFromPlusZ(scene.get(), 40, 40, 36.0), rays));
     }
     std::printf("shadow effect %.4f, cone RMSE vs rays at 30, 10, 1 degrees: %.5f %.5f %.5f\n", rmse(none, rays), errors[0],

@@ -29,10 +29,10 @@ protected:
         node->settings.functions["Shading"] = "lighting";
         node->settings.functions["Illumination"] = "lambert";
         node->settings.functions["Shadowing"] = shadowing;
-        node->settings.ambient = 0.0;
+        node->settings.parameters["ambient"] = 0.0;
         node->settings.earlyTerminationThreshold = 1.0;
         node->settings.sampleDistanceFactor = step;
-        node->settings.lightVolumeScale = scale;
+        node->settings.parameters["lightVolumeScale"] = double(scale);
         osg::ref_ptr<VolumeScene> scene = new VolumeScene;
         scene->addChild(node.get());
         for (std::size_t i = 0; i < lights.size(); ++i) {

@@ -74,13 +74,13 @@ protected:
             node->settings.functions["Shading"] = "lighting";
             node->settings.functions["Illumination"] = "lambert";
             node->settings.functions["Shadowing"] = shadowing;
-            node->settings.ambient = 0.0;
+            node->settings.parameters["ambient"] = 0.0;
             node->settings.earlyTerminationThreshold = 1.0;
             node->settings.sampleDistanceFactor = 0.5;
-            node->settings.lightVolumeScale = 1.0;
-            node->settings.coneAngle = 0.5;       // narrow: the chain's level 0 all the way
-            node->settings.coneStart = 0.0;       // the shadow from the sample itself on
-            node->settings.coneStepGrowth = 0.5;  // half-voxel steps, as the shadow rays'
+            node->settings.parameters["lightVolumeScale"] = 1.0;
+            node->settings.parameters["coneAngle"] = 0.5;       // narrow: the chain's level 0 all the way
+            node->settings.parameters["coneStart"] = 0.0;       // the shadow from the sample itself on
+            node->settings.parameters["coneStepGrowth"] = 0.5;  // half-voxel steps, as the shadow rays'
             osg::ref_ptr<osg::MatrixTransform> t =
                 new osg::MatrixTransform(osg::Matrix::translate(box == &a ? osg::Vec3(0, 0, -4) : osg::Vec3(4, 0, 4)));
             t->addChild(node.get());

@@ -271,7 +271,7 @@ TEST_F(NumericalExtremes, ZeroGradientsUnderLightingFaceTheViewer)
     const osg::Vec3d albedo(0.5, 0.25, 0.125);
     const ReferenceImage truth = renderReference(referenceScene(*scene), camera);
     for (int k = 0; k < 3; ++k) {
-        const double lit = albedo[k] * (defaults.ambient + 1.0) + defaults.specular;
+        const double lit = albedo[k] * (defaults.number("ambient") + 1.0) + defaults.number("specular");
         EXPECT_NEAR(truth.at(8, 8, k), lit * alpha, 1e-6) << "reference, channel " << k;
         EXPECT_NEAR(p.at(8, 8)[k], lit * alpha, 1e-3) << "GPU, channel " << k;
     }

@@ -268,7 +268,7 @@ TEST_F(OpaqueGeometry, IsosurfaceHidesThePartOfAPlaneBehindItAndLeavesItsDepth)
     volume->dirty();
     osg::ref_ptr<VolumeNode> node = volumeNode(volume.get(), constantTransferFunction(osg::Vec4(1, 0, 0, 1), -20, 20).get());
     node->settings.functions["RayTraversal"] = "isosurface";
-    node->settings.isoValue = 0.0;
+    node->settings.parameters["isoValue"] = 0.0;
     osg::ref_ptr<VolumeScene> scene = new VolumeScene;
     scene->addChild(node.get());
     scene->addChild(flatSquare({0, 0, 0}, 15.0f, osg::Vec4(0, 0, 1, 1)).get());  // through the centre

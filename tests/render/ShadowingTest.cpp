@@ -36,7 +36,7 @@ TEST_F(Shadowing, AHomogeneousBlockLitFromTheViewerShadowsItselfByExpMinusSigmaS
     EXPECT_NEAR(ratio, 0.5 * -std::expm1(-2 * sigma * D) / -std::expm1(-sigma * D), 2e-3);
     // A shorter shadow step changes nothing in a homogeneous medium (midpoint segments are exact).
     scene = lit(block.get(), tf.get(), "ray");
-    findVolumeNodes(*scene)[0]->settings.shadowStepFactor = 0.13;
+    findVolumeNodes(*scene)[0]->settings.parameters["shadowStepFactor"] = 0.13;
     EXPECT_NEAR(renderOrthoFromPlusZ(scene.get(), 8, 8, 32.0).at(4, 4).r() / unlit.r(), ratio, 2e-4);
 }
 
@@ -86,7 +86,7 @@ TEST_F(Shadowing, ClippedAwayMaterialCastsNoShadow)
     // fine step gives the exact ratio, the default one is within sigma * step of it.
     for (const double factor : {0.02, 1.0}) {
         osg::ref_ptr<VolumeScene> scene = clipped("ray");
-        findVolumeNodes(*scene)[0]->settings.shadowStepFactor = factor;
+        findVolumeNodes(*scene)[0]->settings.parameters["shadowStepFactor"] = double(factor);
         const osg::Vec4 shadowed = renderOrthoFromPlusZ(scene.get(), 8, 8, 32.0).at(4, 4);
         EXPECT_NE(scene->compositionKeys()[0].find("ClipPosition=[plane]"), std::string::npos)
             << "shadow rays need the plane per sample: " << scene->compositionKeys()[0];
@@ -123,7 +123,7 @@ TEST_F(Shadowing, HenyeyGreensteinScalesEachLightByThePhaseFunction)
         osg::ref_ptr<VolumeScene> scene = lit(block.get(), tf.get(), "ray", 1.0, {light});
         VolumeNode* node = findVolumeNodes(*scene)[0];
         node->settings.functions["Illumination"] = illumination;
-        node->settings.anisotropy = g;
+        node->settings.parameters["anisotropy"] = double(g);
         return renderOrthoFromPlusZ(scene.get(), 8, 8, 32.0).at(4, 4);
     };
     // g = 0 is isotropic: the albedo times the light, as Lambert with the normal towards the light.

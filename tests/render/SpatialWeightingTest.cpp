@@ -8,6 +8,8 @@
 
 #include <volume_model/DefaultScene.h>
 #include <volume_model/ReadVolume.h>
+#include <volume_model/RenderSettings.h>
+#include <volume_model/SpatialWeighting.h>
 #include <volume_reference/ReferenceSetup.h>
 #include <volume_renderer/CompositionPolicy.h>
 #include <volume_renderer/SceneSettings.h>
@@ -16,6 +18,41 @@
 
 namespace volren::test {
 namespace {
+
+TEST(SpatialWeightingSettings, ReadBackExactlyAndRefuseBadCurves)
+{
+    RenderSettings s;
+    std::string error;
+    ASSERT_TRUE(s.set("weightZ", "0:0,0.123456789012345:1,1:0.3", error)) << error;
+    EXPECT_EQ(spatialWeighting(s).axes[2].knots.size(), 3u);
+    EXPECT_EQ(spatialWeighting(s).axes[2].knots[1].first, 0.123456789012345);
+    EXPECT_TRUE(spatialWeighting(s).axes[0].identity());
+    RenderSettings copy;
+    ASSERT_TRUE(copy.set("weightz", s.get("weightZ"), error)) << error;
+    EXPECT_EQ(copy, s);
+    ASSERT_TRUE(s.set("weightX", "ramp:0.05", error)) << error;
+    EXPECT_EQ(s.get("weightX"), "0:0,0.05:1,0.95:1,1:0");
+    ASSERT_TRUE(s.set("weightX", "none", error)) << error;
+    EXPECT_TRUE(spatialWeighting(s).axes[0].knots.empty());
+    EXPECT_EQ(s.get("weightX"), "");
+    EXPECT_EQ(RenderSettings::slotForKey("weighting"), "Weighting");
+
+    std::string many;
+    for (int i = 0; i <= int(WeightCurve::maxKnots); ++i) many += (i ? "," : "") + std::to_string(i / 20.0) + ":1";
+    const std::vector<std::pair<std::string, std::string>> bad = {
+        {"0.5", "is not u:w"},          {"0:1,x:1", "is not u:w"},     {"0:1.5", "weight must be in [0, 1]"},
+        {"0:-0.1", "weight must be in [0, 1]"}, {"1.2:1", "u must be in [0, 1]"}, {"0.5:1,0.5:0", "u must increase"},
+        {"0.6:1,0.5:0", "u must increase"},     {"ramp:0", "0 < A <= 0.5"},  {"ramp:0.7", "0 < A <= 0.5"},
+        {"0:nan", "is not u:w"},        {many, "at most 16 knots"}};
+    for (const auto& [value, why] : bad) {
+        RenderSettings r;
+        EXPECT_FALSE(r.set("weightY", value, error)) << value;
+        EXPECT_NE(error.find("weightY: "), std::string::npos) << error;
+        EXPECT_NE(error.find(why), std::string::npos) << value << ": " << error;
+        EXPECT_EQ(r, RenderSettings{}) << "a refused curve changes nothing: " << value;
+    }
+}
+
 
 class SpatialWeightingRender : public RenderFixture
 {
@@ -218,7 +255,7 @@ TEST_F(WeightedShadows, WeightedOutMaterialCastsNoShadow)
     // weight evaluated with loops was cut short by llvmpipe's limit on a fragment's loop iterations.
     for (const char* shadowing : {"ray", "light_volume"}) {
         osg::ref_ptr<VolumeScene> scene = lit(block.get(), tf.get(), shadowing);
-        findVolumeNodes(*scene)[0]->settings.shadowStepFactor = 0.02;
+        findVolumeNodes(*scene)[0]->settings.parameters["shadowStepFactor"] = 0.02;
         const osg::Vec4 whole = renderOrthoFromPlusZ(scene.get(), 8, 8, 32.0).at(4, 4);
         applySetting(*scene, "weightZ", half);  // a light volume is rebuilt for the new weighting
         const osg::Vec4 shadowed = renderOrthoFromPlusZ(scene.get(), 8, 8, 32.0).at(4, 4);

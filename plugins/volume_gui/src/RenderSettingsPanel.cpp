@@ -1,16 +1,18 @@
 #include <volume_gui/RenderSettingsPanel.h>
 
+#include <volume_model/ParameterCatalog.h>
+
 #include <imgui.h>
 
 #include <algorithm>
 #include <cstdio>
-#include <cstdlib>
 #include <sstream>
 
 namespace volren {
 
-RenderSettingsPanel::RenderSettingsPanel(VolumeNode* node, std::map<std::string, std::vector<std::string>> choices)
-    : _node(node), _choices(std::move(choices))
+RenderSettingsPanel::RenderSettingsPanel(VolumeNode* node, std::map<std::string, std::vector<std::string>> choices,
+                                         ChosenFunctions chosen)
+    : _node(node), _choices(std::move(choices)), _chosen(std::move(chosen))
 {
 }
 
@@ -21,15 +23,22 @@ void RenderSettingsPanel::apply(const std::string& key, const std::string& value
     else _error.clear();
 }
 
-namespace {
-
-const char* const weightKeys[3] = {"weightX", "weightY", "weightZ"};
-
-}  // namespace
-
-double RenderSettingsPanel::fade(int axis) const
+std::vector<const ParameterDecl*> RenderSettingsPanel::shownParameters() const
 {
-    const WeightCurve& curve = _node->settings.weighting.axes[std::size_t(axis)];
+    std::map<std::string, std::string> chosen = _chosen ? _chosen() : std::map<std::string, std::string>{};
+    for (const auto& [slot, name] : _node->settings.functions) chosen[slot] = name;
+    for (const std::string& slot : _node->settings.forceNull) chosen[slot] = "null";
+    std::vector<const ParameterDecl*> shown;
+    for (const ParameterDecl& p : ParameterCatalog::instance().all()) {
+        auto it = chosen.find(p.slot);
+        if (it != chosen.end() && p.readBy(p.slot, it->second) && p.panel.kind != PanelHint::Hidden) shown.push_back(&p);
+    }
+    return shown;
+}
+
+double RenderSettingsPanel::fade(const std::string& key) const
+{
+    const WeightCurve curve = _node->settings.parameter<WeightCurve>(key);
     if (curve.knots.empty()) return 0.0;
     const double a = curve.knots.size() > 1 ? curve.knots[1].first : 0.0;
     WeightCurve ramp;
@@ -40,28 +49,67 @@ double RenderSettingsPanel::fade(int axis) const
     return WeightCurve::parse(text.str(), ramp, error) && ramp == curve ? a : -1.0;
 }
 
-void RenderSettingsPanel::setFade(int axis, double fraction)
+void RenderSettingsPanel::setFade(const std::string& key, double fraction)
 {
     std::ostringstream text;
     text.precision(17);
     if (fraction > 0.0) text << "ramp:" << std::min(fraction, 0.5);
-    apply(weightKeys[axis], fraction > 0.0 ? text.str() : "none");
+    apply(key, fraction > 0.0 ? text.str() : "none");
 }
 
-const std::vector<SettingSlider>& RenderSettingsPanel::shadowSliders()
+void RenderSettingsPanel::drawParameter(const ParameterDecl& p)
 {
-    static const std::vector<SettingSlider> sliders = {
-        {"shadow step factor", "shadowStepFactor", 0.25f, 8.0f, true},
-        {"shadow cutoff", "shadowCutoff", 1e-4f, 0.5f, true},
-        {"light volume scale", "lightVolumeScale", 0.1f, 1.0f, false},
-        {"cone angle (degrees)", "coneAngle", 0.5f, 90.0f, true},
-        {"cone start (voxels)", "coneStart", 0.0f, 8.0f, false},
-        {"cone step growth", "coneStepGrowth", 0.25f, 4.0f, true},
-        {"cone filter sigma (voxels)", "coneFilterSigma", 0.0f, 3.0f, false},
-        {"occlusion distance (voxels)", "aoDistance", 1.0f, 64.0f, true},
-        {"anisotropy g", "anisotropy", -0.9f, 0.9f, false},
-    };
-    return sliders;
+    const std::string label = p.label.empty() ? p.key : p.label;
+    const double lo = p.panel.lo != p.panel.hi ? p.panel.lo : p.lo;
+    const double hi = p.panel.lo != p.panel.hi ? p.panel.hi : p.hi;
+    const std::string current = _node->settings.get(p.key);
+    bool changed = false;
+    std::ostringstream text;
+    switch (p.panel.kind) {
+    case PanelHint::Slider:
+    case PanelHint::LogSlider: {
+        const ImGuiSliderFlags flags = p.panel.kind == PanelHint::LogSlider ? ImGuiSliderFlags_Logarithmic : 0;
+        if (p.type == ParameterType::Integer) {
+            int v = _node->settings.parameter<int>(p.key);
+            if ((changed = ImGui::SliderInt(label.c_str(), &v, int(lo), int(hi), "%d", flags))) text << v;
+        } else {
+            float v = float(_node->settings.number(p.key));
+            if ((changed = ImGui::SliderFloat(label.c_str(), &v, float(lo), float(hi), "%.4g", flags))) text << v;
+        }
+        break;
+    }
+    case PanelHint::Checkbox: {
+        bool v = _node->settings.parameter<bool>(p.key);
+        if ((changed = ImGui::Checkbox(label.c_str(), &v))) text << (v ? "on" : "off");
+        break;
+    }
+    case PanelHint::Combo:
+        if (ImGui::BeginCombo(label.c_str(), current.c_str())) {
+            for (const std::string& c : p.choices)
+                if (ImGui::Selectable(c.c_str(), c == current)) changed = true, text << c;
+            ImGui::EndCombo();
+        }
+        break;
+    case PanelHint::Text: {
+        ImGui::PushID(p.key.c_str());
+        if (p.type == ParameterType::Curve) {  // a fade of both ends, or any curve as text
+            const double f = fade(p.key);
+            float fraction = float(std::max(f, 0.0));
+            if (ImGui::SliderFloat(("fade ends " + label).c_str(), &fraction, 0.0f, 0.5f, f < 0.0 ? "(curve)" : "%.3f"))
+                setFade(p.key, fraction);
+        }
+        char buffer[512];
+        std::snprintf(buffer, sizeof(buffer), "%s", current.c_str());
+        if ((changed = ImGui::InputText(label.c_str(), buffer, sizeof(buffer), ImGuiInputTextFlags_EnterReturnsTrue)))
+            text << buffer;
+        ImGui::PopID();
+        break;
+    }
+    case PanelHint::Hidden:
+        break;
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s: %s (%s)", p.key.c_str(), p.help.c_str(), p.range().c_str());
+    if (changed) apply(p.key, text.str());
 }
 
 void RenderSettingsPanel::draw()
@@ -73,7 +121,8 @@ void RenderSettingsPanel::draw()
                                                          {"gradient", "Gradient"},
                                                          {"illumination", "Illumination"},
                                                          {"shadowing", "Shadowing"},
-                                                         {"acceleration", "Acceleration"}};
+                                                         {"acceleration", "Acceleration"},
+                                                         {"weighting", "Weighting"}};
     for (const auto& [key, slot] : slots) {
         const std::string current = _node->settings.get(key);
         if (ImGui::BeginCombo(key, current.empty() ? "(scene decides)" : current.c_str())) {
@@ -95,28 +144,9 @@ void RenderSettingsPanel::draw()
         v << stop;
         apply("earlyTermination", v.str());
     }
-    // Shadows and scattering (Ctrl + drag in the view turns the lights).
-    if (ImGui::CollapsingHeader("Shadows and scattering", ImGuiTreeNodeFlags_DefaultOpen)) {
-        for (const SettingSlider& s : shadowSliders()) {
-            float v = float(std::strtod(_node->settings.get(s.key).c_str(), nullptr));
-            if (ImGui::SliderFloat(s.label, &v, s.lo, s.hi, "%.3f", s.logarithmic ? ImGuiSliderFlags_Logarithmic : 0)) {
-                std::ostringstream text;
-                text << v;
-                apply(s.key, text.str());
-            }
-        }
-    }
     int cell = _node->settings.macrocellSize;
     if (ImGui::SliderInt("macrocell size", &cell, 1, 64, "%d voxels", ImGuiSliderFlags_Logarithmic))
         apply("macrocellSize", std::to_string(cell));
-    float tolerance = float(_node->settings.adaptiveTolerance);
-    if (ImGui::SliderFloat("adaptive tolerance", &tolerance, 1e-4f, 0.1f, "%.4f", ImGuiSliderFlags_Logarithmic)) {
-        std::ostringstream v;
-        v << tolerance;
-        apply("adaptiveTolerance", v.str());
-    }
-    int steps = _node->settings.adaptiveSteps;
-    if (ImGui::SliderInt("adaptive steps", &steps, 1, 64)) apply("adaptiveSteps", std::to_string(steps));
     int lod = _node->settings.lod;
     if (ImGui::SliderInt("level of detail", &lod, 0, 6)) apply("lod", std::to_string(lod));
     bool byDistance = _node->settings.lodByDistance;
@@ -132,22 +162,14 @@ void RenderSettingsPanel::draw()
         for (const std::string& s : nulls) list += (list.empty() ? "" : ",") + s;
         apply("forceNull", list);
     }
-    // Spatial weighting: each axis's ends faded (the slider) or any curve "u:w,u:w,..." (Enter applies).
-    if (ImGui::CollapsingHeader("spatial weighting")) {
-        for (int axis = 0; axis < 3; ++axis) {
-            ImGui::PushID(axis);
-            const double current = fade(axis);
-            float fraction = float(std::max(current, 0.0));
-            const std::string label = std::string("fade ends ") + "xyz"[axis];
-            if (ImGui::SliderFloat(label.c_str(), &fraction, 0.0f, 0.5f, current < 0.0 ? "(curve)" : "%.3f"))
-                setFade(axis, fraction);
-            char text[512];
-            const std::string curve = _node->settings.get(weightKeys[axis]);
-            std::snprintf(text, sizeof(text), "%s", curve.c_str());
-            if (ImGui::InputText(weightKeys[axis], text, sizeof(text), ImGuiInputTextFlags_EnterReturnsTrue))
-                apply(weightKeys[axis], text);
-            ImGui::PopID();
+    // The parameters of the implementations the node is drawn with, grouped by slot.
+    std::string group;
+    for (const ParameterDecl* p : shownParameters()) {
+        if (p->slot != group) {
+            ImGui::Separator();
+            ImGui::TextDisabled("%s", (group = p->slot).c_str());
         }
+        drawParameter(*p);
     }
     if (!_error.empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", _error.c_str());
     ImGui::End();

@@ -1,5 +1,6 @@
 #include <volume_model/ParseNumber.h>
 
+#include <charconv>
 #include <cmath>
 #include <cstdlib>
 
@@ -13,6 +14,13 @@ bool parseFiniteNumber(const std::string& text, double& out)
     if (!end || *end != '\0' || !std::isfinite(value)) return false;
     out = value;
     return true;
+}
+
+std::string shortestText(double v)
+{
+    char text[32];
+    const auto [end, error] = std::to_chars(text, text + sizeof(text), v);
+    return error == std::errc() ? std::string(text, end) : std::string("nan");
 }
 
 }  // namespace volren

@@ -1,4 +1,5 @@
 #include <volume_model/ParseNumber.h>
+#include <volume_model/RenderSettings.h>
 #include <volume_model/SpatialWeighting.h>
 
 #include <charconv>
@@ -7,14 +8,6 @@
 namespace volren {
 
 namespace {
-
-/// The shortest text that reads back as `v`.
-std::string number(double v)
-{
-    char text[32];
-    const auto [end, error] = std::to_chars(text, text + sizeof(text), v);
-    return error == std::errc() ? std::string(text, end) : std::string("nan");
-}
 
 std::string trimmed(const std::string& s)
 {
@@ -48,7 +41,7 @@ bool WeightCurve::identity() const
 std::string WeightCurve::text() const
 {
     std::string out;
-    for (const auto& [u, w] : knots) out += (out.empty() ? "" : ",") + number(u) + ":" + number(w);
+    for (const auto& [u, w] : knots) out += (out.empty() ? "" : ",") + shortestText(u) + ":" + shortestText(w);
     return out;
 }
 
@@ -86,6 +79,14 @@ bool WeightCurve::parse(const std::string& text, WeightCurve& out, std::string& 
                false;
     out.knots = std::move(knots);
     return true;
+}
+
+SpatialWeighting spatialWeighting(const RenderSettings& settings)
+{
+    SpatialWeighting w;
+    for (std::size_t axis = 0; axis < 3; ++axis)
+        w.axes[axis] = settings.parameter<WeightCurve>(std::string("weight") + "XYZ"[axis]);
+    return w;
 }
 
 }  // namespace volren

@@ -124,26 +124,27 @@ void setShading(Medium& m, const ReferenceScene::Placed& placed, bool lit)
     // Ambient occlusion from the cones' start to their reach, in voxels of the smallest extent.
     m.occlusion = (decided || lit) && placed.occlusion;
     const double voxel = std::min({m.size.x / m.dims.x, m.size.y / m.dims.y, m.size.z / m.dims.z});
-    m.occlusionStart = s.coneStart * voxel;
-    m.occlusionDistance = s.aoDistance * voxel;
-    m.ambient = s.ambient;
-    m.specular = s.specular;
-    m.shininess = s.shininess;
-    m.roughness = s.roughness;
-    m.shadingThreshold = s.shadingThreshold;
+    m.occlusionStart = s.number("coneStart") * voxel;
+    m.occlusionDistance = s.number("aoDistance") * voxel;
+    m.ambient = s.number("ambient");
+    m.specular = s.number("specular");
+    m.shininess = s.number("shininess");
+    m.roughness = s.number("roughness");
+    m.shadingThreshold = s.number("shadingThreshold");
 }
 
 void setWeighting(Medium& m, const ReferenceScene::Placed& placed)
 {
     const auto& node = static_cast<const VolumeNode&>(*placed.node);
     const RenderSettings& s = node.settings;
+    const SpatialWeighting curves = spatialWeighting(s);
     const std::string weighting = !placed.choice.empty() ? choiceOf(placed, s, "Weighting")
-                                  : s.forceNull.count("Weighting") || s.weighting.identity()
+                                  : s.forceNull.count("Weighting") || curves.identity()
                                       ? "null"
                                       : s.functions.count("Weighting") ? s.functions.at("Weighting")
                                                                        : "axes";
     if (weighting == "null") m.weighting = {};
-    else if (weighting == "axes") m.weighting = s.weighting;
+    else if (weighting == "axes") m.weighting = curves;
     else
         throw std::invalid_argument("reference: no model for Weighting '" + weighting + "' (volume '" + node.getName() +
                                     "')");

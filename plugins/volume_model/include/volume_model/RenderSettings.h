@@ -1,5 +1,5 @@
 #pragma once
-#include <volume_model/SpatialWeighting.h>
+#include <volume_model/ParameterDecl.h>
 
 #include <limits>
 #include <map>
@@ -9,7 +9,10 @@
 
 namespace volren {
 
-/// Per-node render settings: plain data, compared by value by the renderer each frame.
+/// Per-node render settings: plain data, compared by value by the renderer each frame. It holds
+/// what every volume has (the step, early termination, storage and level of detail) and the
+/// chosen implementations; each implementation's own parameters are values of `parameters`,
+/// declared beside the implementation (ParameterCatalog).
 /// Implementation choices are by slot name (see shaders/slots.glsl); the renderer resolves and
 /// validates names against its registry (volren::applyNodeSetting) and its CompositionPolicy
 /// fills unset slots from the scene.
@@ -25,33 +28,6 @@ struct RenderSettings
     double earlyTerminationThreshold = 1.0 - 1.0 / 512.0;
     /// Edge of the empty-space-skipping macrocells, in voxels (Acceleration occupancy).
     int macrocellSize = 8;
-    /// Adaptive sampling (Acceleration adaptive): a macrocell whose classified RGBA (opacity and
-    /// opacity-weighted colour) varies by at most this over its values is homogeneous, and one
-    /// sample stands for up to adaptiveSteps steps of the march inside it.
-    double adaptiveTolerance = 1.0 / 256.0;
-    /// Most steps of the march one sample stands for in a homogeneous macrocell (1 = none).
-    int adaptiveSteps = 4;
-    /// Henyey-Greenstein anisotropy g of the scattering Illumination (0 isotropic, > 0 forward).
-    double anisotropy = 0.0;
-    /// Shadow rays (Shadowing ray): their step as a factor of the view ray's step.
-    double shadowStepFactor = 1.0;
-    /// Shadow rays stop once the light's transmittance falls below this (0 = never early).
-    double shadowCutoff = 1.0 / 512.0;
-    /// Propagated light volume (Shadowing light_volume): its resolution as a fraction of the
-    /// volume's along each axis (0, 1].
-    double lightVolumeScale = 0.5;
-    /// Cone tracing (Shadowing cone, cone_ao): the shadow cones' full aperture in degrees.
-    double coneAngle = 10.0;
-    /// Cone tracing: where the cones start, in voxels from the sample (its own neighbourhood
-    /// casts no shadow on it).
-    double coneStart = 0.5;
-    /// Cone tracing: each step is this times the cone's diameter there (at least the shadow step;
-    /// the diameter is at least one voxel); 1.25 has the error of 1 at less time (docs/bench/shadows.md).
-    double coneStepGrowth = 1.25;
-    /// Cone tracing: the Gaussian pre-filter of the opacity volume, its sigma in voxels (0: none).
-    double coneFilterSigma = 0.0;
-    /// Ambient occlusion (Shadowing cone_ao): how far its cones reach, in voxels.
-    double aoDistance = 8.0;
     /// Level of detail: the volume is sampled from this level of its mip chain (0 = full
     /// resolution, each level half the voxels along each axis) with a step 2^lod times as long.
     int lod = 0;
@@ -70,24 +46,9 @@ struct RenderSettings
     /// finely where a driver rounds filtered 8-bit texels to 8 bits), "auto" widens only on such
     /// drivers (Mesa's llvmpipe).
     std::string texturePrecision = "auto";
-    /// Data value of the isosurface (isosurface traversal); NaN = the TF's first opaque value.
-    double isoValue = std::numeric_limits<double>::quiet_NaN();
-    /// Samples below this classified opacity are not lit (lighting_threshold shading).
-    double shadingThreshold = 0.05;
-    /// Ambient light, as a fraction of the classified colour.
-    double ambient = 0.2;
-    /// Specular strength and Blinn-Phong exponent.
-    double specular = 0.3, shininess = 24.0;
-    /// Cook-Torrance surface roughness (0..1].
-    double roughness = 0.35;
-    /// Threshold of threshold classification, 0..1 of the value window.
-    double threshold = 0.5;
-    /// What debug shading shows: 0 scalar, 1 position, 2 classification, 3 gradient, 4 normal,
-    /// 5 view direction, 6 light direction.
-    int debugView = 4;
-    /// Spatial weighting: per-axis curves over the normalised coordinates scaling each sample's
-    /// opacity (the Weighting slot's axes implementation; all 1 = none).
-    SpatialWeighting weighting;
+    /// Values of the implementations' declared parameters (ParameterCatalog), by key; a
+    /// parameter not here has its declared default.
+    std::map<std::string, ParameterValue> parameters;
 
     /// Slot -> implementation chosen by the user ("RayTraversal" -> "mip"); unset slots are
     /// chosen by the scene analysis.
@@ -105,8 +66,20 @@ struct RenderSettings
     static std::vector<std::pair<std::string, std::string>> keys();
     /// Current value of `key` as text ("" when the scene decides).
     std::string get(const std::string& key) const;
+    /// Value of declared parameter `key` (set, else its default) of type double, int, bool,
+    /// std::string or WeightCurve. Throws std::logic_error when no implementation declares `key`
+    /// or declares it of another type.
+    template <typename T> T parameter(const std::string& key) const;
+    /// Value of a Number parameter (parameter<double>).
+    double number(const std::string& key) const { return parameter<double>(key); }
     /// Slot chosen by a key ("traversal" -> "RayTraversal"), or "" when the key is not a slot key.
     static std::string slotForKey(const std::string& key);
 };
+
+extern template double RenderSettings::parameter<double>(const std::string&) const;
+extern template int RenderSettings::parameter<int>(const std::string&) const;
+extern template bool RenderSettings::parameter<bool>(const std::string&) const;
+extern template std::string RenderSettings::parameter<std::string>(const std::string&) const;
+extern template WeightCurve RenderSettings::parameter<WeightCurve>(const std::string&) const;
 
 }  // namespace volren

@@ -45,4 +45,10 @@ struct SpatialWeighting
     bool operator!=(const SpatialWeighting& o) const { return !(*this == o); }
 };
 
+struct RenderSettings;
+
+/// The spatial weighting the parameters weightX, weightY and weightZ (declared by the Weighting
+/// slot's axes implementation) of `settings` describe.
+SpatialWeighting spatialWeighting(const RenderSettings& settings);
+
 }  // namespace volren

@@ -1,6 +1,8 @@
 #pragma once
 #include <volume_renderer/BindContext.h>
 
+#include <volume_model/ParameterDecl.h>
+
 #include <algorithm>
 #include <functional>
 #include <optional>
@@ -131,6 +133,9 @@ struct ShaderFunction
     std::vector<UniformDecl> uniforms = {};  ///< uniforms it reads
     std::vector<TextureDecl> textures = {};  ///< samplers it reads
     std::vector<AuxData> needs = {};         ///< auxiliary data the renderer must create
+    /// Its parameters (slot and implementation are filled in at registration): what `--set`,
+    /// scene files, the panel and its bind read. Keys are unique across the registry.
+    std::vector<ParameterDecl> parameters = {};
     std::function<void(BindContext&)> bind = {};  ///< sets this frame's uniform values and textures
     ImplementationTraits traits = {};        ///< what the composition policy knows of it
     /// Classification: makes, for a binding, the CPU mirror of its opacity over texel values: a

@@ -28,8 +28,11 @@ public:
     std::size_t addShaderDirectoryFunctions();
 
     /// Adds or replaces an implementation (plugins may add their own); an empty `file` becomes
-    /// `<slot>/<name>.glsl`.
+    /// `<slot>/<name>.glsl`. Declares its parameters in the ParameterCatalog: throws
+    /// std::logic_error when a key is taken by another parameter.
     void add(ShaderFunction function);
+    /// Declares a parameter every implementation of `slot` (but null) reads; throws as add().
+    void addSlotParameter(const std::string& slot, ParameterDecl parameter);
     /// The implementation `name` of `slot`, or null.
     const ShaderFunction* find(const std::string& slot, const std::string& name) const;
     /// Names of the implementations of `slot` that single-volume compositions may choose (the

@@ -3,6 +3,7 @@
 
 #include <volume_model/ClipNode.h>
 #include <volume_model/RenderSettings.h>
+#include <volume_model/SpatialWeighting.h>
 
 #include <osg/Notify>
 
@@ -203,7 +204,8 @@ void CompositionPolicy::chooseWeighting(ChosenComposition& out, const RenderSett
     // The node's spatial weighting wherever a chosen implementation weighs its samples by it.
     const Wishes wish{settings, pass};
     Composition& c = out.composition;
-    if (wish.named("Weighting").empty() && !settings.weighting.identity()) {
+    const SpatialWeighting weighting = spatialWeighting(settings);
+    if (wish.named("Weighting").empty() && !weighting.identity()) {
         bool weighs = false;
         for (const char* slot : {"RayTraversal", "Shadowing"})
             if (const ShaderFunction* f = _registry.find(slot, c.functionFor(slot));
@@ -225,7 +227,7 @@ void CompositionPolicy::chooseWeighting(ChosenComposition& out, const RenderSett
     // a branch's both sides pays for every segment it could have, as much as the sample itself).
     if (c.functionFor("Weighting") == "axes")
         for (std::size_t axis = 0; axis < 3; ++axis) {
-            const std::size_t knots = settings.weighting.axes[axis].knots.size();
+            const std::size_t knots = weighting.axes[axis].knots.size();
             c.weightGroups[axis] = knots > 1 ? unsigned((knots - 2) / 4 + 1) : 0u;
         }
 }

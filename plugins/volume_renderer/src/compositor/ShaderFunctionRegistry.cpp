@@ -1,6 +1,7 @@
 #include <volume_renderer/ShaderFunctionRegistry.h>
 #include <volume_renderer/Slots.h>
 
+#include <volume_model/ParameterCatalog.h>
 #include <volume_model/ReadVolume.h>
 
 #include <osgDB/FileNameUtils>
@@ -15,6 +16,13 @@
 #include <stdexcept>
 
 namespace volren {
+
+namespace {
+
+/// The model's parameter catalog is filled by the registry: a look-up there loads it.
+[[maybe_unused]] const bool catalogLoader = (ParameterCatalog::instance().setLoader([] { ShaderFunctionRegistry::instance(); }), true);
+
+}  // namespace
 
 ShaderFunctionRegistry& ShaderFunctionRegistry::instance()
 {
@@ -82,7 +90,11 @@ std::vector<std::string> ShaderFunctionRegistry::loadPlugins()
                 failures.push_back(path + ": no volrenRegisterShaderFunctions symbol");
                 continue;
             }
-            registerFunctions(*this);  // the library stays loaded: its bind functions are used
+            try {
+                registerFunctions(*this);  // the library stays loaded: its bind functions are used
+            } catch (const std::exception& e) {
+                failures.push_back(path + ": " + e.what());
+            }
         }
     }
     return failures;
@@ -114,8 +126,20 @@ std::size_t ShaderFunctionRegistry::addShaderDirectoryFunctions()
 void ShaderFunctionRegistry::add(ShaderFunction function)
 {
     if (function.file.empty()) function.file = function.slot + "/" + function.name + ".glsl";
+    for (ParameterDecl& p : function.parameters) {
+        p.slot = function.slot;
+        p.implementations = {function.name};
+        ParameterCatalog::instance().declare(p);
+    }
     const std::string slot = function.slot, name = function.name;
     _functions[slot][name] = std::move(function);
+}
+
+void ShaderFunctionRegistry::addSlotParameter(const std::string& slot, ParameterDecl parameter)
+{
+    parameter.slot = slot;
+    parameter.implementations.clear();
+    ParameterCatalog::instance().declare(parameter);
 }
 
 const ShaderFunction* ShaderFunctionRegistry::find(const std::string& slot, const std::string& name) const

@@ -70,9 +70,15 @@ void registerAccelerationFunctions(ShaderFunctionRegistry& registry)
                                            {"Acceleration/occupancy_leap.glsl"});
     adaptive.uniforms.push_back({"volren_adaptiveSteps", "int", ""});
     adaptive.traits.approximates = true;
+    adaptive.parameters = {{.key = "adaptiveTolerance", .defaultValue = 1.0 / 256.0, .lo = 0.0, .hi = 1.0,
+                            .help = "largest change of the classified RGBA over a macrocell that counts as homogeneous",
+                            .label = "adaptive tolerance", .panel = {PanelHint::LogSlider, 1e-4, 0.1}},
+                           {.key = "adaptiveSteps", .type = ParameterType::Integer, .defaultValue = 4, .lo = 1, .hi = 64,
+                            .unit = "steps", .help = "most march steps one sample stands for in a homogeneous macrocell",
+                            .label = "adaptive steps", .panel = {PanelHint::Slider, 1, 64}}};
     adaptive.bind = [grid = adaptive.bind](BindContext& c) {
         grid(c);
-        c.uniform("volren_adaptiveSteps", c.settings.adaptiveSteps);
+        c.uniform("volren_adaptiveSteps", c.settings.parameter<int>("adaptiveSteps"));
     };
     registry.add(adaptive);
 }

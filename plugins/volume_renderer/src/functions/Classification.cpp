@@ -170,17 +170,20 @@ void registerClassificationFunctions(ShaderFunctionRegistry& registry)
                   .uniforms = bindings::window + std::vector<UniformDecl>{{"volren_threshold", "float", ""}},
                   .textures = {{"volren_transferFunction", "sampler1D"}},
                   .needs = {AuxData::TransferFunctionTable},
+                  .parameters = {{.key = "threshold", .defaultValue = 0.5, .lo = 0.0, .hi = 1.0,
+                                  .help = "level of the threshold classification, as a fraction of the value window"}},
                   .bind =
                       [](BindContext& c) {
                           bindings::bindWindow(c);
-                          c.uniform("volren_threshold", float(c.settings.threshold));
+                          c.uniform("volren_threshold", float(c.settings.number("threshold")));
                           c.texture("volren_transferFunction", c.aux.at(AuxData::TransferFunctionTable).get());
                       },
                   .traits = leaf,
                   .mayShow = [](const BindContext& c) -> std::function<bool(double, double)> {
-                      return [&c](double lo, double hi) {  // opaque where u reaches the threshold
+                      const double threshold = c.settings.number("threshold");
+                      return [&c, threshold](double lo, double hi) {  // opaque where u reaches the threshold
                           const double u = std::clamp(largestWindowed(c, lo, hi), 0.0, 1.0);
-                          return std::isnan(u) || u >= c.settings.threshold - 1e-6;
+                          return std::isnan(u) || u >= threshold - 1e-6;
                       };
                   }});
 }

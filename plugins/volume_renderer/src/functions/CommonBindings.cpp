@@ -61,7 +61,7 @@ void bindLights(BindContext& c)
         c.uniformElement("volren_lightPosition", size, i, osg::Vec4f(light.position));
         c.uniformElement("volren_lightColour", size, i, osg::Vec3f(light.colour));
     }
-    c.uniform("volren_ambient", float(c.settings.ambient));
+    c.uniform("volren_ambient", float(c.settings.number("ambient")));
 }
 
 const UniformDecl gradientScale = {"volren_gradientScale", "float", ""};

@@ -5,6 +5,13 @@
 
 namespace volren {
 
+namespace {
+
+const ParameterDecl specular = {.key = "specular", .defaultValue = 0.3, .lo = 0.0, .hi = 10.0,
+                                .help = "specular strength", .panel = {PanelHint::Slider, 0.0, 2.0}};
+
+}  // namespace
+
 void registerIlluminationFunctions(ShaderFunctionRegistry& registry)
 {
     registry.add({.slot = "Illumination", .name = "null", .traits = {.calls = SlotList{}}});
@@ -12,26 +19,35 @@ void registerIlluminationFunctions(ShaderFunctionRegistry& registry)
     registry.add({.slot = "Illumination",
                   .name = "blinn_phong",
                   .uniforms = {{"volren_specular", "float", ""}, {"volren_shininess", "float", ""}},
+                  .parameters = {specular,
+                                 {.key = "shininess", .defaultValue = 24.0, .lo = 1.0, .hi = 1e4,
+                                  .help = "Blinn-Phong exponent", .panel = {PanelHint::LogSlider, 1.0, 256.0}}},
                   .bind =
                       [](BindContext& c) {
-                          c.uniform("volren_specular", float(c.settings.specular));
-                          c.uniform("volren_shininess", float(c.settings.shininess));
+                          c.uniform("volren_specular", float(c.settings.number("specular")));
+                          c.uniform("volren_shininess", float(c.settings.number("shininess")));
                       },
                   .traits = {.calls = SlotList{}, .aliases = {"blinnphong", "blinn-phong", "phong"}}});
     registry.add({.slot = "Illumination",
                   .name = "cook_torrance",
                   .uniforms = {{"volren_specular", "float", ""}, {"volren_roughness", "float", ""}},
+                  .parameters = {specular,
+                                 {.key = "roughness", .defaultValue = 0.35, .lo = 0.0, .hi = 1.0, .openLow = true,
+                                  .help = "Cook-Torrance surface roughness", .panel = {PanelHint::Slider, 0.02, 1.0}}},
                   .bind =
                       [](BindContext& c) {
-                          c.uniform("volren_specular", float(c.settings.specular));
-                          c.uniform("volren_roughness", float(c.settings.roughness));
+                          c.uniform("volren_specular", float(c.settings.number("specular")));
+                          c.uniform("volren_roughness", float(c.settings.number("roughness")));
                       },
                   .traits = {.calls = SlotList{}, .aliases = {"cooktorrance", "cook-torrance"}}});
     // Volume scattering (no normal): the phase function between the light and the view.
     registry.add({.slot = "Illumination",
                   .name = "henyey_greenstein",
                   .uniforms = {{"volren_anisotropy", "float", ""}},
-                  .bind = [](BindContext& c) { c.uniform("volren_anisotropy", float(c.settings.anisotropy)); },
+                  .parameters = {{.key = "anisotropy", .defaultValue = 0.0, .lo = -0.99, .hi = 0.99,
+                                  .help = "Henyey-Greenstein g: 0 isotropic, > 0 forward, < 0 backward scattering",
+                                  .label = "anisotropy g", .panel = {PanelHint::Slider, -0.9, 0.9}}},
+                  .bind = [](BindContext& c) { c.uniform("volren_anisotropy", float(c.settings.number("anisotropy"))); },
                   .traits = {.calls = SlotList{}, .aliases = {"hg", "phase", "henyeygreenstein", "scattering"}}});
 }
 

@@ -8,6 +8,7 @@
 #include <volume_model/Volume.h>
 
 #include <cmath>
+#include <limits>
 
 namespace volren {
 
@@ -38,7 +39,7 @@ void bindMarching(BindContext& c)
 /// Data value of the isosurface: the setting, else the first TF value with any opacity.
 double isoValueOf(const BindContext& c)
 {
-    if (!std::isnan(c.settings.isoValue)) return c.settings.isoValue;
+    if (const double iso = c.settings.number("isoValue"); !std::isnan(iso)) return iso;
     const std::vector<osg::Vec4> table = c.transfer.lookupTable();
     const double lo = c.transfer.domainMin(), hi = c.transfer.domainMax();
     for (std::size_t i = 0; i < table.size(); ++i)
@@ -112,6 +113,10 @@ void registerRayTraversalFunctions(ShaderFunctionRegistry& registry)
 
     ShaderFunction iso = traversal("isosurface", skipping, {{"volren_isoTexel", "float", ""}});
     iso.traits.writesDepth = true;
+    iso.parameters = {{.key = "isoValue", .defaultValue = std::numeric_limits<double>::quiet_NaN(),
+                       .lo = std::numeric_limits<double>::lowest(), .hi = std::numeric_limits<double>::max(),
+                       .emptyMeans = "the TF's first opaque value", .help = "data value of the isosurface",
+                       .label = "iso value", .panel = {PanelHint::Text}}};
     iso.traits.skips = "extremum";  // leaps over cells whose values stay below the iso value
     iso.bind = [](BindContext& c) {
         bindMarching(c);

@@ -5,6 +5,8 @@
 
 #include <volume_model/RenderSettings.h>
 
+#include <algorithm>
+
 namespace volren {
 
 namespace {
@@ -28,19 +30,28 @@ ShaderFunction lit(const std::string& name, std::vector<UniformDecl> extra = {})
                        .lights = LightUse::Required}};
 }
 
+/// What the debug shading shows, in the order of its GLSL switch (volren_debugView).
+const std::vector<std::string> debugViews = {"scalar", "position", "classification", "gradient", "normal", "view", "light"};
+
 }  // namespace
 
 void registerShadingFunctions(ShaderFunctionRegistry& registry)
 {
     registry.add({.slot = "Shading", .name = "null", .traits = {.calls = SlotList{}}});
+    // Every lit shading adds this fraction of the classified colour (bindings::bindLights).
+    registry.addSlotParameter("Shading", {.key = "ambient", .defaultValue = 0.2, .lo = 0.0, .hi = 1.0,
+                                          .help = "ambient light, as a fraction of the classified colour"});
     registry.add(lit("lighting"));
 
     ShaderFunction threshold = lit("lighting_threshold", {{"volren_shadingThreshold", "float", ""}});
     threshold.bind = [](BindContext& c) {
         bindings::bindGeometry(c);
         bindings::bindLights(c);
-        c.uniform("volren_shadingThreshold", float(c.settings.shadingThreshold));
+        c.uniform("volren_shadingThreshold", float(c.settings.number("shadingThreshold")));
     };
+    threshold.parameters = {{.key = "shadingThreshold", .defaultValue = 0.05, .lo = 0.0, .hi = 1.0,
+                             .help = "classified opacity below which samples are left unlit",
+                             .label = "shading threshold"}};
     registry.add(threshold);
 
     // Lit on boundaries only, weighted by the gradient magnitude against volren_gradientScale.
@@ -56,12 +67,17 @@ void registerShadingFunctions(ShaderFunctionRegistry& registry)
                   .name = "debug",
                   .uniforms = bindings::geometry + bindings::lights +
                               std::vector<UniformDecl>{{"volren_debugView", "int", ""}, bindings::gradientScale},
+                  .parameters = {{.key = "debugView", .type = ParameterType::Choice, .defaultValue = std::string("normal"),
+                                  .choices = debugViews, .help = "what the debug shading shows",
+                                  .label = "debug view", .panel = {PanelHint::Combo}}},
                   .bind =
                       [](BindContext& c) {
                           bindings::bindGeometry(c);
                           bindings::bindLights(c);
                           bindings::bindGradientScale(c);
-                          c.uniform("volren_debugView", c.settings.debugView);
+                          const std::string view = c.settings.parameter<std::string>("debugView");
+                          c.uniform("volren_debugView",
+                                    int(std::find(debugViews.begin(), debugViews.end(), view) - debugViews.begin()));
                       },
                   .traits = {.calls = SlotList{"Gradient", "Reconstruction"}, .lights = LightUse::Optional}});
 }

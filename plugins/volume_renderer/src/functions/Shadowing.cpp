@@ -69,6 +69,38 @@ void bindGeometryShadows(BindContext& c)
     c.texture("volren_geometryShadow", count > 0 ? map->second.get() : none.get());
 }
 
+/// The shadow march's step, shared by every method that marches towards the lights.
+const ParameterDecl shadowStepFactor = {
+    .key = "shadowStepFactor", .defaultValue = 1.0, .lo = 0.0, .hi = 1e3, .openLow = true,
+    .help = "step of the marches towards the lights, as a factor of the view ray's step",
+    .label = "shadow step factor", .panel = {PanelHint::LogSlider, 0.25, 8.0}};
+/// Where a march towards a light stops.
+const ParameterDecl shadowCutoff = {
+    .key = "shadowCutoff", .defaultValue = 1.0 / 512.0, .lo = 0.0, .hi = 1.0,
+    .help = "marches towards a light stop once its transmittance falls below this (0 = never; default 1/512)",
+    .label = "shadow cutoff", .panel = {PanelHint::LogSlider, 1e-4, 0.5}};
+/// The cones' shape and march (cone and cone_ao).
+const std::vector<ParameterDecl> coneParameters = {
+    shadowStepFactor,
+    shadowCutoff,
+    {.key = "coneAngle", .defaultValue = 10.0, .lo = 0.0, .hi = 120.0, .openLow = true, .unit = "degrees",
+     .help = "the shadow cones' full aperture", .label = "cone angle (degrees)",
+     .panel = {PanelHint::LogSlider, 0.5, 90.0}},
+    {.key = "coneStart", .defaultValue = 0.5, .lo = 0.0, .hi = 16.0, .unit = "voxels",
+     .help = "where the cones start, from the sample (its own neighbourhood casts no shadow on it)",
+     .label = "cone start (voxels)", .panel = {PanelHint::Slider, 0.0, 8.0}},
+    {.key = "coneStepGrowth", .defaultValue = 1.25, .lo = 0.05, .hi = 4.0,
+     .help = "each cone step as a fraction of the cone's diameter there (1.25: the error of 1 at less time)",
+     .label = "cone step growth", .panel = {PanelHint::LogSlider, 0.25, 4.0}},
+    {.key = "coneFilterSigma", .defaultValue = 0.0, .lo = 0.0, .hi = 4.0, .unit = "voxels",
+     .help = "sigma of the Gaussian pre-filter of the opacity volume (0 = none)",
+     .label = "cone filter sigma (voxels)", .panel = {PanelHint::Slider, 0.0, 3.0}}};
+/// How far ambient occlusion looks (cone_ao).
+const ParameterDecl aoDistance = {
+    .key = "aoDistance", .defaultValue = 8.0, .lo = 0.0, .hi = 256.0, .openLow = true, .unit = "voxels",
+    .help = "reach of the ambient-occlusion cones", .label = "occlusion distance (voxels)",
+    .panel = {PanelHint::LogSlider, 1.0, 64.0}};
+
 }  // namespace
 
 void registerShadowingFunctions(ShaderFunctionRegistry& registry)
@@ -85,13 +117,14 @@ void registerShadowingFunctions(ShaderFunctionRegistry& registry)
                                                        {"volren_shadowCutoffDepth", "float", ""}},
                   .textures = {geometryShadowTexture},
                   .needs = {AuxData::GeometryShadowMap},
+                  .parameters = {shadowStepFactor, shadowCutoff},
                   .bind =
                       [](BindContext& c) {
                           bindings::bindGeometry(c);
                           bindGeometryShadows(c);
-                          c.uniform("volren_shadowStep", float(c.sampleDistance * c.settings.shadowStepFactor));
+                          c.uniform("volren_shadowStep", float(c.sampleDistance * c.settings.number("shadowStepFactor")));
                           c.uniform("volren_referenceStep", float(c.volume.minSpacing()));
-                          const double cutoff = c.settings.shadowCutoff;
+                          const double cutoff = c.settings.number("shadowCutoff");
                           c.uniform("volren_shadowCutoffDepth", float(cutoff > 0.0 ? -std::log(cutoff) : 1e30));
                       },
                   .traits = {.calls = SlotList{"Reconstruction", "Classification", "ClipPosition", "Weighting"},
@@ -110,13 +143,17 @@ void registerShadowingFunctions(ShaderFunctionRegistry& registry)
                               std::vector<UniformDecl>{{"volren_shadowStep", "float", ""}, {"volren_referenceStep", "float", ""}},
                   .textures = {{"volren_lightVolume", "sampler3D"}, geometryShadowTexture},
                   .needs = {AuxData::LightVolume, AuxData::GeometryShadowMap},
+                  .parameters = {shadowStepFactor,
+                                 {.key = "lightVolumeScale", .defaultValue = 0.5, .lo = 0.0, .hi = 1.0, .openLow = true,
+                                  .help = "resolution of the light volume as a fraction of the volume's along each axis",
+                                  .label = "light volume scale", .panel = {PanelHint::Slider, 0.1, 1.0}}},
                   .bind =
                       [](BindContext& c) {
                           bindings::bindGeometry(c);
                           bindGeometryShadows(c);
                           // The build integrates the full-resolution classification along each
                           // path at the view ray's step (times the shadow step factor).
-                          c.uniform("volren_shadowStep", float(c.sampleDistance * c.settings.shadowStepFactor));
+                          c.uniform("volren_shadowStep", float(c.sampleDistance * c.settings.number("shadowStepFactor")));
                           c.uniform("volren_referenceStep", float(c.volume.minSpacing()));
                           c.texture("volren_lightVolume", c.aux.at(AuxData::LightVolume).get());
                       },
@@ -142,9 +179,9 @@ void registerShadowingFunctions(ShaderFunctionRegistry& registry)
     auto bindCone = [](BindContext& c) {
         bindings::bindGeometry(c);
         bindGeometryShadows(c);
-        c.uniform("volren_shadowStep", float(c.sampleDistance * c.settings.shadowStepFactor));
+        c.uniform("volren_shadowStep", float(c.sampleDistance * c.settings.number("shadowStepFactor")));
         c.uniform("volren_referenceStep", float(c.volume.minSpacing()));
-        const double cutoff = c.settings.shadowCutoff;
+        const double cutoff = c.settings.number("shadowCutoff");
         c.uniform("volren_shadowCutoffDepth", float(cutoff > 0.0 ? -std::log(cutoff) : 1e30));
         // One voxel of the chain's finest level (the sampled level), its smallest extent.
         const osg::Vec3d size = c.volume.worldSize();
@@ -152,13 +189,15 @@ void registerShadowingFunctions(ShaderFunctionRegistry& registry)
         const double voxel = std::min({size.x() / chain.getTextureWidth(), size.y() / chain.getTextureHeight(),
                                        size.z() / chain.getTextureDepth()});
         c.uniform("volren_coneVoxel", float(voxel));
-        c.uniform("volren_coneAngle", float(osg::DegreesToRadians(c.settings.coneAngle)));
-        c.uniform("volren_coneStart", float(c.settings.coneStart));
-        c.uniform("volren_coneStepGrowth", float(c.settings.coneStepGrowth));
-        c.uniform("volren_coneFilterSigma", float(c.settings.coneFilterSigma));
-        c.uniform("volren_aoDistance", float(c.settings.aoDistance * voxel));
+        c.uniform("volren_coneAngle", float(osg::DegreesToRadians(c.settings.number("coneAngle"))));
+        c.uniform("volren_coneStart", float(c.settings.number("coneStart")));
+        c.uniform("volren_coneStepGrowth", float(c.settings.number("coneStepGrowth")));
+        c.uniform("volren_coneFilterSigma", float(c.settings.number("coneFilterSigma")));
+        c.uniform("volren_aoDistance", float(c.settings.number("aoDistance") * voxel));
         c.texture("volren_opacityMips", c.aux.at(AuxData::OpacityMipChain).get());
     };
+    std::vector<ParameterDecl> withAoDistance = coneParameters;
+    withAoDistance.push_back(aoDistance);
     for (const char* name : {"cone", "cone_ao"})
         registry.add({.slot = "Shadowing",
                       .name = name,
@@ -167,6 +206,7 @@ void registerShadowingFunctions(ShaderFunctionRegistry& registry)
                       .uniforms = coneUniforms,
                       .textures = {{"volren_opacityMips", "sampler3D"}, geometryShadowTexture},
                       .needs = {AuxData::OpacityMipChain, AuxData::GeometryShadowMap},
+                      .parameters = std::string(name) == "cone" ? coneParameters : withAoDistance,
                       .bind = bindCone,
                       .traits = {.calls = SlotList{"Reconstruction", "Classification", "ClipPosition", "Weighting"},
                                  .clipsPerSample = true,

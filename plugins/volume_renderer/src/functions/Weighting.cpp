@@ -4,6 +4,7 @@
 #include <volume_model/RenderSettings.h>
 
 #include <algorithm>
+#include <cctype>
 
 namespace volren {
 
@@ -11,7 +12,7 @@ void registerWeightingFunctions(ShaderFunctionRegistry& registry)
 {
     registry.add({.slot = "Weighting", .name = "null", .traits = {.calls = SlotList{}}});
 
-    // The node's RenderSettings::weighting as hinges (Weighting/axes.glsl): up to
+    // The node's curves weightX, weightY, weightZ as hinges (Weighting/axes.glsl): up to
     // WeightCurve::maxKnots - 1 (15) segments per axis, four per vec4.
     static_assert(WeightCurve::maxKnots <= 17, "Weighting/axes.glsl holds 16 segments per axis");
     ShaderFunction axes{.slot = "Weighting",
@@ -21,8 +22,16 @@ void registerWeightingFunctions(ShaderFunctionRegistry& registry)
                                      {"volren_weightSlope", "vec4", "12"},
                                      {"volren_weightBase", "vec3", ""}},
                         .traits = {.calls = SlotList{}}};
+    for (const char* axis : {"X", "Y", "Z"})
+        axes.parameters.push_back({.key = std::string("weight") + axis, .type = ParameterType::Curve,
+                                   .defaultValue = WeightCurve{},
+                                   .help = std::string("opacity weight along ") + char(std::tolower(*axis)) +
+                                           " over u in [0,1] of the volume (microscopy: 'ramp:0.05' fades the "
+                                           "first and last 5% of the slices)",
+                                   .label = std::string("weight ") + char(std::tolower(*axis)),
+                                   .panel = {PanelHint::Text}});
     axes.bind = [](BindContext& c) {
-        const SpatialWeighting& weighting = c.settings.weighting;
+        const SpatialWeighting weighting = spatialWeighting(c.settings);
         osg::Vec3f base;
         for (unsigned int axis = 0; axis < 3; ++axis) {
             const auto& knots = weighting.axes[axis].knots;

@@ -60,11 +60,11 @@ osg::Texture* occupancyFor(const BindContext& context, const std::vector<const B
         throw std::logic_error("occupancy grid without a Classification mirror");
     // What the classification's opacity depends on besides the volume and the TF.
     char key[96];
-    std::snprintf(key, sizeof(key), " %a", context.settings.threshold);  // exact
+    std::snprintf(key, sizeof(key), " %a", context.settings.number("threshold"));  // exact
     std::string fullKey = classification->name + key;
     const bool varies = homogeneity && classification->variation && context.volume.nonFiniteCount() == 0;
     if (homogeneity) {
-        std::snprintf(key, sizeof(key), " homogeneous within %a", varies ? context.settings.adaptiveTolerance : -1.0);
+        std::snprintf(key, sizeof(key), " homogeneous within %a", varies ? context.settings.number("adaptiveTolerance") : -1.0);
         fullKey += key;
     }
     const GridShape shape = gridShapeFor(context.volume.dims(), context.settings.macrocellSize, footprint, context.lod);
@@ -74,7 +74,7 @@ osg::Texture* occupancyFor(const BindContext& context, const std::vector<const B
             TextureCache::CellTest homogeneous;
             if (varies)
                 homogeneous = [variation = classification->variation(context),
-                               tolerance = context.settings.adaptiveTolerance](double lo, double hi) {
+                               tolerance = context.settings.number("adaptiveTolerance")](double lo, double hi) {
                     return variation(lo, hi) <= tolerance;
                 };
             else if (homogeneity)
@@ -100,7 +100,7 @@ std::optional<BrickHidingRule> hidingFor(const BindContext& context, const std::
         traversal->traits.skips != "opacity" || !traversal->traits.skipsByDefault)
         return std::nullopt;
     char key[160];
-    std::snprintf(key, sizeof(key), " %a %p %u", context.settings.threshold, static_cast<const void*>(&context.transfer),
+    std::snprintf(key, sizeof(key), " %a %p %u", context.settings.number("threshold"), static_cast<const void*>(&context.transfer),
                   context.transfer.modifiedCount());
     return BrickHidingRule{.apron = reconstruction->traits.footprint + 1,
                            .key = classification->name + key,

@@ -17,7 +17,7 @@ const std::vector<BuiltVolumeKind>& builtVolumeKinds()
          .mipmapped = false,
          .dims =
              [](const osg::Vec3i& level, const BindContext& c) {
-                 osg::Vec3i d = lightVolumeDims(level, c.settings.lightVolumeScale);
+                 osg::Vec3i d = lightVolumeDims(level, c.settings.number("lightVolumeScale"));
                  d.z() *= lightVolumeLayers(c.lights.size());  // lights 4-7 in a second layer
                  return d;
              },

@@ -1,0 +1,84 @@
+#include <volume_model/ParameterCatalog.h>
+
+#include <stdexcept>
+
+namespace volren {
+
+ParameterCatalog& ParameterCatalog::instance()
+{
+    static ParameterCatalog catalog;
+    return catalog;
+}
+
+void ParameterCatalog::setLoader(std::function<void()> loader) { _loader = std::move(loader); }
+
+void ParameterCatalog::load() const
+{
+    if (!_loader) return;
+    const std::function<void()> loader = std::move(_loader);
+    _loader = nullptr;  // once: declare() during loading looks up without loading again
+    loader();
+}
+
+namespace {
+
+std::string describe(const ParameterDecl& d) { return "'" + d.key + "' of " + d.owners(); }
+
+}  // namespace
+
+void ParameterCatalog::declare(const ParameterDecl& decl)
+{
+    if (decl.key.empty() || decl.slot.empty())
+        throw std::logic_error("a parameter needs a key and a slot (" + describe(decl) + ")");
+    if (!decl.valid(decl.defaultValue))
+        throw std::logic_error("parameter " + describe(decl) + ": its default " + decl.format(decl.defaultValue) +
+                               " is not " + decl.range());
+    const bool slider = decl.panel.kind == PanelHint::Slider || decl.panel.kind == PanelHint::LogSlider;
+    if (slider && decl.panel.lo != decl.panel.hi &&
+        (decl.panel.lo > decl.panel.hi || decl.panel.lo < decl.lo || decl.panel.hi > decl.hi ||
+         (decl.openLow && decl.panel.lo <= decl.lo)))
+        throw std::logic_error("parameter " + describe(decl) + ": its panel span is not within " + decl.range());
+    if (decl.panel.kind == PanelHint::LogSlider && !(decl.panel.lo > 0.0))
+        throw std::logic_error("parameter " + describe(decl) + ": a logarithmic slider needs a span above 0");
+    for (ParameterDecl& d : _decls) {
+        if (d.key != decl.key) continue;
+        if (!d.sameAs(decl))
+            throw std::logic_error("parameter key clash: " + describe(decl) + " is declared differently by " +
+                                   describe(d) + " (keys are unique across the registry: choose another)");
+        for (const std::string& name : decl.implementations)
+            if (!d.readBy(d.slot, name) && !d.implementations.empty()) d.implementations.push_back(name);
+        if (decl.implementations.empty()) d.implementations.clear();
+        return;
+    }
+    std::vector<std::string> names = decl.aliases;
+    names.push_back(decl.key);
+    for (const std::string& name : names)
+        for (const ParameterDecl& d : _decls) {
+            bool taken = lowerKey(d.key) == lowerKey(name);
+            for (const std::string& alias : d.aliases) taken = taken || lowerKey(alias) == lowerKey(name);
+            if (taken)
+                throw std::logic_error("parameter key clash: '" + name + "' of " + describe(decl) + " is taken by " +
+                                       describe(d) + " (keys are unique across the registry: choose another)");
+        }
+    _decls.push_back(decl);
+}
+
+const ParameterDecl* ParameterCatalog::find(const std::string& key) const
+{
+    load();
+    const std::string k = lowerKey(key);
+    for (const ParameterDecl& d : _decls) {
+        if (lowerKey(d.key) == k) return &d;
+        for (const std::string& alias : d.aliases)
+            if (lowerKey(alias) == k) return &d;
+    }
+    return nullptr;
+}
+
+const std::deque<ParameterDecl>& ParameterCatalog::all() const
+{
+    load();
+    return _decls;
+}
+
+}  // namespace volren
