@@ -13,8 +13,11 @@
 #include <volume_reference/ReferenceSetup.h>
 #include <volume_renderer/OffscreenRenderer.h>
 #include <volume_renderer/SceneSettings.h>
+#include <volume_renderer/ShaderFunctionRegistry.h>
+#include <volume_renderer/Slots.h>
 
 #include <volume_model/DefaultScene.h>
+#include <volume_model/ReferenceModel.h>
 #include <volume_model/Requantise.h>
 #include <volume_model/SpatialWeighting.h>
 #include <volume_model/VolumeNode.h>
@@ -47,7 +50,8 @@ struct BenchConfig
     std::string precision = "native";                           ///< native, 8bit, 16bit, float
 };
 
-/// The default matrix: the scene's defaults, then one option changed at a time.
+/// The default matrix: the scene's defaults, then one option changed at a time: the settings
+/// every volume has, then the rows each implementation declares (ShaderFunction::benchRows).
 std::vector<BenchConfig> defaultMatrix()
 {
     std::vector<BenchConfig> m{{"default", {}, "native"}};
@@ -55,47 +59,60 @@ std::vector<BenchConfig> defaultMatrix()
         for (const std::string& v : values) m.push_back({key + "=" + v, {{key, v}}, "native"});
     };
     add("samplerate", {"0.5", "1", "4", "8"});
-    add("reconstruction", {"nearest", "tricubic"});
-    add("gradient", {"forward", "central9"});
-    add("illumination", {"lambert", "cook_torrance"});
     add("lighting", {"off"});
     add("earlyTermination", {"0.95", "0.99", "1"});  // 0.95: the default before it was error-bounded
-    add("acceleration", {"null", "adaptive"});  // null: skipping off (same image, the cost of marching all)
-    m.push_back({"acceleration=adaptive+adaptiveSteps=8", {{"acceleration", "adaptive"}, {"adaptiveSteps", "8"}}, "native"});
-    m.push_back({"acceleration=adaptive+adaptiveTolerance=0.02",
-                 {{"acceleration", "adaptive"}, {"adaptiveTolerance", "0.02"}},
-                 "native"});
     add("macrocellSize", {"4", "16"});
     add("lod", {"1", "2"});
     add("lodByDistance", {"on"});
     add("texturePrecision", {"native", "16bit"});
-    add("volumestorage", {"bricked"});  // the cost of the page table lookup when a volume is bricked
-    add("jitter", {"null", "texture"});
-    add("classification", {"premultiplied"});
-    add("weightZ", {"ramp:0.1"});  // spatial weighting: the cost of the weights at every sample
+    const ShaderFunctionRegistry& registry = ShaderFunctionRegistry::instance();
+    for (const SlotInfo& slot : slots()) {
+        std::string key;  // the setting that chooses the slot's implementation
+        for (const auto& entry : RenderSettings::keys())
+            if (RenderSettings::slotForKey(entry.first) == slot.name) key = entry.first;
+        for (const std::string& name : registry.names(slot.name))
+            for (const auto& row : registry.find(slot.name, name)->benchRows) {
+                BenchConfig config{key + "=" + name, {{key, name}}, "native"};
+                for (const auto& [k, v] : row) {
+                    config.name += "+" + k + "=" + v;
+                    config.settings.emplace_back(k, v);
+                }
+                m.push_back(config);
+            }
+    }
     for (const char* p : {"8bit", "16bit", "float"}) m.push_back({std::string("precision=") + p, {}, p});
     return m;
 }
 
+/// The model the reference computes for the implementation of `slot` the renderer chose for
+/// `placed` (its declared ReferenceModel), "" where none is chosen.
+std::string modelOf(const ReferenceScene::Placed& placed, const std::string& slot)
+{
+    const auto chosen = placed.choice.find(slot);
+    if (chosen == placed.choice.end()) return {};
+    const ReferenceModel* declared = ReferenceModelCatalog::instance().find(slot, chosen->second);
+    return declared ? declared->model : "undeclared " + chosen->second;
+}
+
 /// What a reference draws, so configurations that draw the same picture share one: each
-/// volume's lighting model as the policy chose it ("lit:blinn_phong", "lit:lambert/lighting_surface",
-/// "unlit"), its spatial weighting ("unlit weightZ=0:0,0.1:1") and how it combines with
-/// overlapping ones ("unlit added", "unlit maximum").
+/// volume's lighting model as the policy chose it and its implementations declare
+/// ("lit:diffuse + blinn-phong highlight", "lit:lambert diffuse/lit on surfaces", "unlit"),
+/// its spatial weighting ("unlit weightZ=0:0,0.1:1") and how it combines with overlapping ones
+/// ("unlit added", "unlit maximum").
 std::string lightingModel(const ReferenceScene& scene, bool lighting)
 {
     std::string key;
     for (const auto& placed : scene.volumes) {
-        const auto shading = placed.choice.find("Shading");
-        const bool lit = lighting && !scene.lights.empty() && shading != placed.choice.end() && shading->second != "null";
-        std::string model = lit ? "lit:" + placed.choice.at("Illumination") : std::string("unlit");
-        if (lit && shading->second != "lighting") model += "/" + shading->second;  // another lit picture
-        // What its Shadowing approximates (referenceScene fills it from the implementation's traits).
+        const std::string shading = modelOf(placed, "Shading");
+        const bool lit = lighting && !scene.lights.empty() && !shading.empty() && shading != "unlit";
+        std::string model = lit ? "lit:" + modelOf(placed, "Illumination") : std::string("unlit");
+        if (lit && shading != "lit") model += "/" + shading;  // another lit picture
+        // What its Shadowing approximates (referenceScene fills it from the declared model).
         if (lit && placed.shadows == ReferenceScene::Shadows::Exact) model += "+shadows";
         if (lit && placed.occlusion) model += "+occlusion";
         if (lit && placed.shadowsGeometry && scene.occluders) model += "+shadowed geometry";
         // Its spatial weighting where the renderer applies it (another picture per curve).
-        const auto weighting = placed.choice.find("Weighting");
-        if (weighting != placed.choice.end() && weighting->second != "null")
+        if (modelOf(placed, "Weighting") == "axis curves")
             if (const auto* node = dynamic_cast<const VolumeNode*>(placed.node.get())) {
                 const SpatialWeighting curves = spatialWeighting(node->settings);
                 for (std::size_t axis = 0; axis < 3; ++axis)

@@ -5,7 +5,7 @@
 // volren_geometryShadowMatrix[light] maps texture space to the map's [0,1]^3 coordinates (a
 // zero matrix: no map covers this light); volren_geometryShadowCount is the number of maps.
 // Points outside the map are lit. Without opaque geometry (VOLREN_GEOMETRY_SHADOWS 0, from
-// Composition::geometryShadows) the lookup is compiled out.
+// the Shadowing's compile options) the lookup is compiled out.
 // float volren_geometryLight(vec3 pos, int light)
 float volren_geometryLight(vec3 pos, int light)
 {

@@ -4,8 +4,8 @@
 // one hinge per segment: w(u) = w_0 + sum_i slope_i * clamp(u - u_i, 0, u_{i+1} - u_i). Axis a's
 // segments 4g..4g+3 are element g of its vec4s (index 4a + g) of volren_weightStart (u_i),
 // volren_weightLength (u_{i+1} - u_i) and volren_weightSlope; unused segments have length and
-// slope 0; volren_weightBase[a] is w_0 (1 without knots). VOLREN_WEIGHT_GROUPS_X/Y/Z (from the
-// composition) say how many vec4s of each axis hold segments: only those are evaluated.
+// slope 0; volren_weightBase[a] is w_0 (1 without knots). VOLREN_WEIGHT_GROUPS_X/Y/Z (its compile
+// options) say how many vec4s of each axis hold segments: only those are evaluated.
 // No loops, and no branches or indexing on a sample's value: a fragment's loop iterations are limited
 // in total on some drivers (llvmpipe stops every loop after 65535), drivers that run both sides
 // of a branch under a mask pay for both, and a sample's weight is asked inside the march and its

@@ -297,7 +297,7 @@ TEST(VolrenCli, BenchWritesTheMatrixWithErrorsAgainstTheReference)
     }
     EXPECT_EQ(rows, 2);
     EXPECT_NE(run.output.find("reference 'unlit'"), std::string::npos) << run.output;
-    EXPECT_NE(run.output.find("reference 'lit:blinn_phong'"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("reference 'lit:diffuse + blinn-phong highlight'"), std::string::npos) << run.output;
 }
 
 /// The first number after `label` in `text` (-1 when absent).

@@ -77,6 +77,12 @@ TEST(ParameterCatalog, TheSameParameterReadByTwoImplementationsIsOneDeclaration)
     EXPECT_TRUE(local.all()[0].readBy("Shading", "shine"));
     EXPECT_FALSE(local.all()[0].readBy("Shading", "lighting"));
     EXPECT_EQ(local.find("TESTAMPLIFICATION"), &local.all()[0]) << "aliases, in any case";
+    // A NaN default ("the scene decides") is the same default again (a registry registered twice).
+    const ParameterDecl level = {.key = "testLevel", .defaultValue = std::nan(""), .lo = -1.0, .hi = 1.0,
+                                 .emptyMeans = "the scene's choice", .slot = "RayTraversal"};
+    local.declare(level);
+    EXPECT_NO_THROW(local.declare(level));
+    EXPECT_EQ(local.all().size(), 2u);
 }
 
 TEST(ParameterCatalog, ParseErrorsNameKeyValueRangeAndImplementation)

@@ -205,6 +205,34 @@ TEST(ReferenceRenderer, LitRampFollowsTheBlinnPhongAndSurfaceClosedForms)
     }
 }
 
+TEST(ReferenceRenderer, HenyeyGreensteinScalesEachLightByThePhaseFunction)
+{
+    // A homogeneous block lit by one directional light, no ambient: every sample's light is the
+    // phase function at the angle between the light's travel and the view, so the image at g
+    // over the image at g = 0 is (1 - g^2) / (1 + g^2 - 2 g cos)^(3/2).
+    auto node = makeVolumeNode(constantVolume(VoxelType::UInt8, {8, 8, 8}, 100).get(),
+                               constantTransferFunction(osg::Vec4(0.8f, 0.5f, 0.25f, 0.2f)).get());
+    std::string error;
+    ASSERT_TRUE(node->settings.set("ambient", "0", error)) << error;
+    node->settings.functions["Shading"] = "lighting";
+    node->settings.functions["Illumination"] = "henyey_greenstein";
+    osg::ref_ptr<osg::Group> root = withNode(node);
+    osg::ref_ptr<osg::LightSource> light = new osg::LightSource;
+    light->getLight()->setDiffuse(osg::Vec4(1, 1, 1, 1));
+    root->addChild(light.get());
+    auto pixel = [&](double g, const osg::Vec4& towardsLight, int c) {
+        node->settings.parameters["anisotropy"] = g;
+        light->getLight()->setPosition(towardsLight);
+        return renderReference(ReferenceScene::collect(*root), orthoFromPlusZ(8, 16.0)).at(4, 4, c);
+    };
+    // From the viewer (cos = -1: back-scattered) and from the side (cos = 0).
+    for (const auto& [towards, cosTheta] : {std::pair{osg::Vec4(0, 0, 1, 0), -1.0}, std::pair{osg::Vec4(-1, 0, 0, 0), 0.0}})
+        for (double g : {0.5, -0.5, 0.9}) {
+            const double phase = (1 - g * g) / std::pow(1 + g * g - 2 * g * cosTheta, 1.5);
+            for (int c = 0; c < 3; ++c) EXPECT_NEAR(pixel(g, towards, c) / pixel(0.0, towards, c), phase, 1e-9) << g;
+        }
+}
+
 TEST(ReferenceRenderer, NanVoxelsAreEmptyAndOpaqueOpacityStopsTheRay)
 {
     auto nanNode = makeVolumeNode(constantVolume(VoxelType::Float32, {8, 8, 8}, std::nan("")).get(),
@@ -402,7 +430,7 @@ TEST(ReferenceShadows, NoNanOrInfAlongAxesDiagonalsFacesOrWithTheLightInside)
     }
 }
 
-TEST(ReferenceShadows, NullShadowingIsTheUnshadowedImageBitForBitAndUnknownOnesAreRefused)
+TEST(ReferenceShadows, NullShadowingIsTheUnshadowedImageBitForBitAndUndeclaredOnesAreRefused)
 {
     // Shadowing unset, "null" or ReferenceScene::Shadows::None: one and the same image, bit for
     // bit (the unshadowed integral this reference computed before shadows existed).
@@ -423,14 +451,19 @@ TEST(ReferenceShadows, NullShadowingIsTheUnshadowedImageBitForBitAndUnknownOnesA
     const ReferenceImage ray = renderReference(ReferenceScene::collect(*root), camera);
     EXPECT_NE(ray.rgba, unset.rgba);
 
-    // A Shadowing the reference has no model of is refused by name, unless the scene says which
-    // shadows it approximates (a light volume or cones: the exact ones, as ray).
-    node->settings.functions["Shadowing"] = "lightvolume";
+    // An approximation is measured against the model it declares: the light volume's is the exact
+    // shadows, the image of ray.
+    node->settings.functions["Shadowing"] = "light_volume";
+    EXPECT_EQ(renderReference(ReferenceScene::collect(*root), camera).rgba, ray.rgba);
+    // A Shadowing that declares no model is refused by name, unless the scene says which shadows
+    // it approximates.
+    node->settings.functions["Shadowing"] = "undeclared_shadows";
     try {
         renderReference(ReferenceScene::collect(*root), camera);
-        ADD_FAILURE() << "an unknown Shadowing was not refused";
+        ADD_FAILURE() << "a Shadowing without a model was not refused";
     } catch (const std::invalid_argument& e) {
-        EXPECT_NE(std::string(e.what()).find("lightvolume"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("undeclared_shadows"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("declares none"), std::string::npos) << e.what();
     }
     ReferenceScene approximating = ReferenceScene::collect(*root);
     approximating.volumes[0].shadows = ReferenceScene::Shadows::Exact;

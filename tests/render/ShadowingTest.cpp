@@ -4,10 +4,12 @@
 // to the light runs back along the view ray, so T_light = exp(-sigma * s) for a sample s deep:
 // the image with shadows is the image without, each segment weighted by that factor.
 #include "LitBlock.h"
+#include "ReferenceComparison.h"
 #include "TestData.h"
 
 #include <volume_model/ClipPlaneNode.h>
 #include <volume_model/DefaultScene.h>
+#include <volume_reference/ReferenceSetup.h>
 
 #include <cmath>
 
@@ -142,6 +144,34 @@ TEST_F(Shadowing, HenyeyGreensteinScalesEachLightByThePhaseFunction)
     const osg::Vec4 sideIsotropic = pixel("henyey_greenstein", 0.0, side), sideForward = pixel("henyey_greenstein", 0.6, side);
     for (int c = 0; c < 3; ++c)
         EXPECT_NEAR(sideForward[c] / sideIsotropic[c], (1 - 0.36) / std::pow(1 + 0.36, 1.5), 1e-4) << "channel " << c;
+}
+
+TEST_F(Shadowing, HenyeyGreensteinMatchesItsReferenceModelForwardAndBackward)
+{
+    // The reference's own phase function (ReferenceModel "henyey-greenstein phase", declared
+    // exact) against the GPU: shadow rays, a light from the side and one from the viewer.
+    osg::ref_ptr<Volume> block = constantVolume(VoxelType::UInt8, {depthVoxels, depthVoxels, depthVoxels}, 100);
+    osg::ref_ptr<TransferFunction> tf = constantTransferFunction(osg::Vec4(0.9f, 0.6f, 0.3f, float(alpha)));
+    const int size = 24;
+    const ReferenceCamera camera = perspectiveCamera(size, osg::Vec3d(20, -50, 35), osg::Vec3d(0, 0, 0), 40, 10, 200);
+    for (const auto& [g, light] : {std::pair{0.6, osg::Vec4(-1, 0, 0, 0)}, std::pair{-0.5, osg::Vec4(0.4f, -1, 0.7f, 0)}}) {
+        osg::ref_ptr<VolumeScene> scene = lit(block.get(), tf.get(), "ray", 1.0, {light});
+        VolumeNode* node = findVolumeNodes(*scene)[0];
+        node->settings.functions["Illumination"] = "henyey_greenstein";
+        node->settings.parameters["anisotropy"] = g;
+        const Pixels gpu = render(scene.get(), size, size, camera.view, camera.projection);
+        const ReferenceSetup setup = referenceSetup(*scene, camera, {});
+        const ReferenceImage truth = renderReference(setup.scene, camera, setup.options);
+        const Difference d = differenceOf(gpu, truth, size);
+        EXPECT_GT(d.covered, size * size / 8) << "g " << g;
+        EXPECT_LT(d.worst, 4e-3) << "g " << g << ", rmse " << d.rmse;
+        // And the phase function matters here: g = 0 is another picture.
+        node->settings.parameters["anisotropy"] = 0.0;
+        const ReferenceImage isotropic = renderReference(referenceSetup(*scene, camera, {}).scene, camera, setup.options);
+        double change = 0.0;
+        for (std::size_t i = 0; i < truth.rgba.size(); ++i) change = std::max(change, std::abs(truth.rgba[i] - isotropic.rgba[i]));
+        EXPECT_GT(change, 0.05) << "g " << g;
+    }
 }
 
 }  // namespace

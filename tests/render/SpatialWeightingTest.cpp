@@ -15,6 +15,7 @@
 #include <volume_renderer/SceneSettings.h>
 
 #include <cmath>
+#include <map>
 
 namespace volren::test {
 namespace {
@@ -175,9 +176,12 @@ TEST_F(SpatialWeightingRender, ThePolicyWeighsOnlyWhereANodeHasCurvesAndATravers
     ASSERT_TRUE(s.set("weightZ", "ramp:0.1", error)) << error;
     EXPECT_EQ(policy.choose(s, {}, {}).composition.functionFor("Weighting"), "axes");
     // Only the segments the curves have are compiled in: a ramp's 3 on z (one vec4), none on x, y.
-    EXPECT_EQ(policy.choose(s, {}, {}).composition.weightGroups, (std::array<unsigned int, 3>{0, 0, 1}));
+    using Defines = std::map<std::string, std::string>;
+    EXPECT_EQ(policy.choose(s, {}, {}).composition.defines,
+              (Defines{{"VOLREN_WEIGHT_GROUPS_X", "0"}, {"VOLREN_WEIGHT_GROUPS_Y", "0"}, {"VOLREN_WEIGHT_GROUPS_Z", "1"}}));
     ASSERT_TRUE(s.set("weightX", "0:0,0.1:1,0.2:0,0.3:1,0.4:0,0.5:1", error)) << error;  // 5 segments: two vec4s
-    EXPECT_EQ(policy.choose(s, {}, {}).composition.weightGroups, (std::array<unsigned int, 3>{2, 0, 1}));
+    EXPECT_EQ(policy.choose(s, {}, {}).composition.defines,
+              (Defines{{"VOLREN_WEIGHT_GROUPS_X", "2"}, {"VOLREN_WEIGHT_GROUPS_Y", "0"}, {"VOLREN_WEIGHT_GROUPS_Z", "1"}}));
     EXPECT_NE(policy.choose(s, {}, {}).composition.key().find("weightGroups=2,0,1;"), std::string::npos);
     ASSERT_TRUE(s.set("weightX", "none", error)) << error;
     s.functions["RayTraversal"] = "mip";
@@ -187,7 +191,7 @@ TEST_F(SpatialWeightingRender, ThePolicyWeighsOnlyWhereANodeHasCurvesAndATravers
     s.functions.erase("RayTraversal");
     s.forceNull.insert("Weighting");
     EXPECT_EQ(policy.choose(s, {}, {}).composition.functionFor("Weighting"), "null");
-    EXPECT_EQ(policy.choose(s, {}, {}).composition.weightGroups, (std::array<unsigned int, 3>{0, 0, 0}));
+    EXPECT_TRUE(policy.choose(s, {}, {}).composition.defines.empty()) << "a null Weighting compiles nothing in";
     EXPECT_EQ(policy.resolve("Weighting", "on"), "axes");
     EXPECT_EQ(policy.resolve("Weighting", "off"), "null");
 }

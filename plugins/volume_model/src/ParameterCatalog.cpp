@@ -1,3 +1,4 @@
+#include <volume_model/DeclarationLoader.h>
 #include <volume_model/ParameterCatalog.h>
 
 #include <stdexcept>
@@ -8,16 +9,6 @@ ParameterCatalog& ParameterCatalog::instance()
 {
     static ParameterCatalog catalog;
     return catalog;
-}
-
-void ParameterCatalog::setLoader(std::function<void()> loader) { _loader = std::move(loader); }
-
-void ParameterCatalog::load() const
-{
-    if (!_loader) return;
-    const std::function<void()> loader = std::move(_loader);
-    _loader = nullptr;  // once: declare() during loading looks up without loading again
-    loader();
 }
 
 namespace {
@@ -65,7 +56,7 @@ void ParameterCatalog::declare(const ParameterDecl& decl)
 
 const ParameterDecl* ParameterCatalog::find(const std::string& key) const
 {
-    load();
+    loadDeclarations();
     const std::string k = lowerKey(key);
     for (const ParameterDecl& d : _decls) {
         if (lowerKey(d.key) == k) return &d;
@@ -77,7 +68,7 @@ const ParameterDecl* ParameterCatalog::find(const std::string& key) const
 
 const std::deque<ParameterDecl>& ParameterCatalog::all() const
 {
-    load();
+    loadDeclarations();
     return _decls;
 }
 

@@ -12,6 +12,12 @@ std::string lowerKey(std::string key)
     return key;
 }
 
+bool sameValue(const ParameterValue& a, const ParameterValue& b)
+{
+    const double *x = std::get_if<double>(&a), *y = std::get_if<double>(&b);
+    return x && y ? *x == *y || (std::isnan(*x) && std::isnan(*y)) : a == b;
+}
+
 namespace {
 
 std::string joined(const std::vector<std::string>& names)
@@ -39,7 +45,7 @@ bool ParameterDecl::readBy(const std::string& slotName, const std::string& name)
 
 bool ParameterDecl::sameAs(const ParameterDecl& o) const
 {
-    return key == o.key && type == o.type && defaultValue == o.defaultValue && lo == o.lo && hi == o.hi &&
+    return key == o.key && type == o.type && sameValue(defaultValue, o.defaultValue) && lo == o.lo && hi == o.hi &&
            openLow == o.openLow && choices == o.choices && emptyMeans == o.emptyMeans && unit == o.unit &&
            help == o.help && label == o.label && panel.kind == o.panel.kind && panel.lo == o.panel.lo &&
            panel.hi == o.panel.hi && aliases == o.aliases && slot == o.slot;

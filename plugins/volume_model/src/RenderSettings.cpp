@@ -47,13 +47,6 @@ std::string lower(std::string s)
     return s;
 }
 
-/// Whether two values are the same (NaN the same as NaN: "the scene decides" in both).
-bool sameValue(const ParameterValue& a, const ParameterValue& b)
-{
-    const double *x = std::get_if<double>(&a), *y = std::get_if<double>(&b);
-    return x && y ? *x == *y || (std::isnan(*x) && std::isnan(*y)) : a == b;
-}
-
 /// Whether every parameter set in `a` has the same value in `b` (set, or by default there).
 bool sameParameters(const RenderSettings& a, const RenderSettings& b)
 {

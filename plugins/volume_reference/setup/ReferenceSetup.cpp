@@ -61,13 +61,19 @@ ReferenceScene referenceScene(VolumeScene& scene)
         placed.blending = combines == "images"   ? ReferenceScene::Blending::Images
                           : combines == "maxima" ? ReferenceScene::Blending::Maxima
                                                  : ReferenceScene::Blending::Media;
-        // What the chosen Shadowing approximates, from its traits (a plugin's without them: nothing).
-        if (auto it = placed.choice.find("Shadowing"); it != placed.choice.end())
-            if (const ShaderFunction* f = ShaderFunctionRegistry::instance().find("Shadowing", it->second)) {
-                placed.shadows = f->traits.shadows ? ReferenceScene::Shadows::Exact : ReferenceScene::Shadows::None;
-                placed.occlusion = f->traits.occlusion;
-                placed.shadowsGeometry = f->traits.shadowsGeometry;
+        // The model of light the chosen Shadowing computes or approximates, as it declares (a
+        // plugin's without a declaration: none), and whether it darkens the opaque geometry.
+        if (auto it = placed.choice.find("Shadowing"); it != placed.choice.end()) {
+            if (const ReferenceModel* model = ReferenceModelCatalog::instance().find("Shadowing", it->second)) {
+                const bool shadows = model->fidelity != ReferenceModel::Fidelity::None &&
+                                     (model->model == ReferenceScene::exactShadows ||
+                                      model->model == ReferenceScene::exactShadowsAndOcclusion);
+                placed.shadows = shadows ? ReferenceScene::Shadows::Exact : ReferenceScene::Shadows::None;
+                placed.occlusion = shadows && model->model == ReferenceScene::exactShadowsAndOcclusion;
             }
+            if (const ShaderFunction* f = scene.policy().registry().find("Shadowing", it->second))
+                placed.shadowsGeometry = f->traits.shadowsGeometry;
+        }
     }
     return content;
 }

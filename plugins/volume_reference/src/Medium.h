@@ -19,7 +19,7 @@ inline glm::dvec3 toGlm(const osg::Vec3d& v) { return {v.x(), v.y(), v.z()}; }
 
 /// How a medium's samples are lit (the node's Shading and Illumination choices).
 enum class Shading { None, Lighting, Threshold, Surface };
-enum class Illumination { None, Lambert, BlinnPhong, CookTorrance };
+enum class Illumination { None, Lambert, BlinnPhong, CookTorrance, HenyeyGreenstein };
 
 /// A clip shape and the transform into its own coordinates (from world in the integrator, from
 /// the medium's local coordinates in a Medium).
@@ -65,6 +65,7 @@ struct Medium
     Shading shading = Shading::None;
     Illumination illumination = Illumination::None;
     double ambient = 0.0, specular = 0.0, shininess = 1.0, roughness = 1.0, shadingThreshold = 0.0;
+    double anisotropy = 0.0;  ///< Henyey-Greenstein g
     /// Lights in the node's local coordinates: position (w = 0: direction towards the light) and colour.
     std::vector<std::pair<glm::dvec4, glm::dvec3>> lights;
     ReferenceOptions::Gradient gradientKind = ReferenceOptions::Gradient::CentralDifferences;

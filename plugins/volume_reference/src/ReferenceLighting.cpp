@@ -1,7 +1,9 @@
 // The reference's lighting: the Shading, Illumination and Shadowing models the renderer's
 // implementations are checked against, chosen per volume from the renderer's choices or the
-// node's settings.
+// node's settings, by the models those implementations declare (ReferenceModelCatalog).
 #include "Medium.h"
+
+#include <volume_model/ReferenceModel.h>
 
 #include <algorithm>
 #include <cmath>
@@ -51,6 +53,13 @@ glm::dvec3 Medium::illuminate(const glm::dvec3& n, const glm::dvec3& v, const gl
     switch (illumination) {
     case Illumination::None: return glm::dvec3(0.0);
     case Illumination::Lambert: return albedo * std::max(nl, 0.0);
+    case Illumination::HenyeyGreenstein: {
+        // Light travelling along -l scattered towards the viewer along v, scaled by 4 pi so that
+        // g = 0 (isotropic) gives the albedo: (1 - g^2) / (1 + g^2 - 2 g cos)^(3/2).
+        const double g = anisotropy, cosTheta = glm::dot(-l, v);
+        const double denominator = std::max(1.0 + g * g - 2.0 * g * cosTheta, 1e-12);
+        return albedo * ((1.0 - g * g) / (denominator * std::sqrt(denominator)));
+    }
     case Illumination::BlinnPhong: {
         if (!(nl > 0.0)) return glm::dvec3(0.0);
         const glm::dvec3 halfway = l + v;
@@ -90,6 +99,22 @@ std::string choiceOf(const ReferenceScene::Placed& placed, const RenderSettings&
     return it == s.functions.end() ? "null" : it->second;
 }
 
+/// The model implementation `name` of `slot` declares (ReferenceModelCatalog), one the reference
+/// implements; throws naming the implementation, the volume and why there is none.
+std::string declaredModel(const std::string& slot, const std::string& name, const VolumeNode& node)
+{
+    const std::string what = slot + " '" + name + "' (volume '" + node.getName() + "')";
+    const ReferenceModel* model = ReferenceModelCatalog::instance().find(slot, name);
+    if (!model) throw std::invalid_argument("reference: no model for " + what + ": it declares none");
+    if (model->fidelity == ReferenceModel::Fidelity::None)
+        throw std::invalid_argument("reference: no model for " + what + ": " + model->why);
+    const std::vector<std::string>& known = ReferenceScene::models().at(slot);
+    if (std::find(known.begin(), known.end(), model->model) == known.end())
+        throw std::invalid_argument("reference: " + what + " declares the model '" + model->model +
+                                    "', which the reference does not implement");
+    return model->model;
+}
+
 }  // namespace
 
 void setShading(Medium& m, const ReferenceScene::Placed& placed, bool lit)
@@ -97,32 +122,28 @@ void setShading(Medium& m, const ReferenceScene::Placed& placed, bool lit)
     const auto& node = static_cast<const VolumeNode&>(*placed.node);
     const RenderSettings& s = node.settings;
     const bool decided = !placed.choice.empty();
-    const std::string illumination = decided || lit ? choiceOf(placed, s, "Illumination") : "null";
-    const std::string shading = decided || lit ? choiceOf(placed, s, "Shading") : "null";
-    if (shading == "null") m.shading = Shading::None;
-    else if (shading == "lighting") m.shading = Shading::Lighting;
-    else if (shading == "lighting_threshold") m.shading = Shading::Threshold;
-    else if (shading == "lighting_surface") m.shading = Shading::Surface;
-    else throw std::invalid_argument("reference: no model for Shading '" + shading + "' (volume '" + node.getName() + "')");
-    if (illumination == "null") m.illumination = Illumination::None;
-    else if (illumination == "lambert") m.illumination = Illumination::Lambert;
-    else if (illumination == "blinn_phong") m.illumination = Illumination::BlinnPhong;
-    else if (illumination == "cook_torrance") m.illumination = Illumination::CookTorrance;
-    else
-        throw std::invalid_argument("reference: no model for Illumination '" + illumination + "' (volume '" +
-                                    node.getName() + "')");
+    const bool shaded = decided || lit;
+    static const std::map<std::string, Shading> shadings = {{"unlit", Shading::None},
+                                                            {"lit", Shading::Lighting},
+                                                            {"lit above threshold", Shading::Threshold},
+                                                            {"lit on surfaces", Shading::Surface}};
+    static const std::map<std::string, Illumination> illuminations = {
+        {"no light", Illumination::None},
+        {"lambert diffuse", Illumination::Lambert},
+        {"diffuse + blinn-phong highlight", Illumination::BlinnPhong},
+        {"diffuse + cook-torrance ggx highlight", Illumination::CookTorrance},
+        {"henyey-greenstein phase", Illumination::HenyeyGreenstein}};
+    m.shading = shaded ? shadings.at(declaredModel("Shading", choiceOf(placed, s, "Shading"), node)) : Shading::None;
+    m.illumination = shaded ? illuminations.at(declaredModel("Illumination", choiceOf(placed, s, "Illumination"), node))
+                            : Illumination::None;
     if (placed.shadows) {
         m.shadows = *placed.shadows;
     } else {
-        const std::string shadowing = decided || lit ? choiceOf(placed, s, "Shadowing") : "null";
-        if (shadowing == "null") m.shadows = ReferenceScene::Shadows::None;
-        else if (shadowing == "ray") m.shadows = ReferenceScene::Shadows::Exact;  // the definition itself
-        else
-            throw std::invalid_argument("reference: no model for Shadowing '" + shadowing + "' (volume '" +
-                                        node.getName() + "'; Placed::shadows may say which it approximates)");
+        const std::string shadowing = shaded ? declaredModel("Shadowing", choiceOf(placed, s, "Shadowing"), node) : "unshadowed";
+        m.shadows = shadowing == "unshadowed" ? ReferenceScene::Shadows::None : ReferenceScene::Shadows::Exact;
     }
     // Ambient occlusion from the cones' start to their reach, in voxels of the smallest extent.
-    m.occlusion = (decided || lit) && placed.occlusion;
+    m.occlusion = shaded && placed.occlusion;
     const double voxel = std::min({m.size.x / m.dims.x, m.size.y / m.dims.y, m.size.z / m.dims.z});
     m.occlusionStart = s.number("coneStart") * voxel;
     m.occlusionDistance = s.number("aoDistance") * voxel;
@@ -131,6 +152,7 @@ void setShading(Medium& m, const ReferenceScene::Placed& placed, bool lit)
     m.shininess = s.number("shininess");
     m.roughness = s.number("roughness");
     m.shadingThreshold = s.number("shadingThreshold");
+    m.anisotropy = s.number("anisotropy");
 }
 
 void setWeighting(Medium& m, const ReferenceScene::Placed& placed)
@@ -138,16 +160,11 @@ void setWeighting(Medium& m, const ReferenceScene::Placed& placed)
     const auto& node = static_cast<const VolumeNode&>(*placed.node);
     const RenderSettings& s = node.settings;
     const SpatialWeighting curves = spatialWeighting(s);
-    const std::string weighting = !placed.choice.empty() ? choiceOf(placed, s, "Weighting")
-                                  : s.forceNull.count("Weighting") || curves.identity()
-                                      ? "null"
-                                      : s.functions.count("Weighting") ? s.functions.at("Weighting")
-                                                                       : "axes";
-    if (weighting == "null") m.weighting = {};
-    else if (weighting == "axes") m.weighting = curves;
-    else
-        throw std::invalid_argument("reference: no model for Weighting '" + weighting + "' (volume '" + node.getName() +
-                                    "')");
+    // Undecided and unnamed: weighted by the node's curves where it has any, as the policy does.
+    const bool own = placed.choice.empty() && !s.forceNull.count("Weighting") && !s.functions.count("Weighting");
+    const std::string model = own ? (curves.identity() ? "unweighted" : "axis curves")
+                                  : declaredModel("Weighting", choiceOf(placed, s, "Weighting"), node);
+    m.weighting = model == "axis curves" ? curves : SpatialWeighting{};
 }
 
 }  // namespace volren::reference

@@ -92,4 +92,16 @@ bool ReferenceScene::occluded(const osg::Vec3d& from, const osg::Vec3d& to) cons
     return segment->containsIntersections();
 }
 
+const std::map<std::string, std::vector<std::string>>& ReferenceScene::models()
+{
+    static const std::map<std::string, std::vector<std::string>> names = {
+        {"Shading", {"unlit", "lit", "lit above threshold", "lit on surfaces"}},
+        {"Illumination",
+         {"no light", "lambert diffuse", "diffuse + blinn-phong highlight", "diffuse + cook-torrance ggx highlight",
+          "henyey-greenstein phase"}},
+        {"Shadowing", {"unshadowed", ReferenceScene::exactShadows, ReferenceScene::exactShadowsAndOcclusion}},
+        {"Weighting", {"unweighted", "axis curves"}}};
+    return names;
+}
+
 }  // namespace volren

@@ -2,7 +2,6 @@
 #include <volume_model/ParameterDecl.h>
 
 #include <deque>
-#include <functional>
 #include <string>
 
 namespace volren {
@@ -10,7 +9,7 @@ namespace volren {
 /// Every declared parameter of the shader-function implementations, in declaration order.
 /// The model knows no implementation: the renderer's registry declares them here as it registers
 /// its implementations, so that the model's settings, the panel and the serializers can read and
-/// validate parameters without linking the renderer.
+/// validate parameters without linking the renderer (a look-up loads them: DeclarationLoader.h).
 class ParameterCatalog
 {
 public:
@@ -26,14 +25,9 @@ public:
     const ParameterDecl* find(const std::string& key) const;
     /// Every declaration, in declaration order.
     const std::deque<ParameterDecl>& all() const;
-    /// Called once, at the first look-up, to fill the catalog (the renderer's registry sets it).
-    void setLoader(std::function<void()> loader);
 
 private:
-    void load() const;
-
     std::deque<ParameterDecl> _decls;
-    mutable std::function<void()> _loader;
 };
 
 }  // namespace volren

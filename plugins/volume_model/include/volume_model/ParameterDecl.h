@@ -78,6 +78,9 @@ struct ParameterDecl
     bool sameAs(const ParameterDecl& o) const;
 };
 
+/// Whether two values are the same (NaN the same as NaN: "the scene decides" in both).
+bool sameValue(const ParameterValue& a, const ParameterValue& b);
+
 /// `key` in lower case (settings keys are matched without regard to case).
 std::string lowerKey(std::string key);
 

@@ -29,21 +29,31 @@ struct ReferenceScene
     /// add. Added colours are clamped to 1; the coverage of added images is 1 - prod(1 - alpha).
     enum class Blending { Media, Images, Maxima };
 
+    /// The models of light the reference implements, by slot (Shading, Illumination, Shadowing,
+    /// Weighting): what an implementation's declared ReferenceModel may name. The reference
+    /// selects each volume's models by the declarations of the implementations it is drawn with.
+    static const std::map<std::string, std::vector<std::string>>& models();
+    static constexpr const char* exactShadows = "exact shadows";  ///< Shadowing: Shadows::Exact
+    /// Shadowing: Shadows::Exact, and the ambient term scaled by its occlusion.
+    static constexpr const char* exactShadowsAndOcclusion = "exact shadows and occlusion";
+
     struct Placed
     {
         osg::ref_ptr<const osg::Node> node;
         osg::Matrixd localToWorld;
         /// Volumes: the implementations the renderer chose for it (slot -> name; the lighting
-        /// model is read from Shading, Illumination and Shadowing). Empty: the node's own
-        /// settings, an unset slot being null (referenceSetup() fills it from the CompositionPolicy).
+        /// models are those the Shading, Illumination, Shadowing and Weighting chosen declare,
+        /// ReferenceModelCatalog). Empty: the node's own settings, an unset slot being null
+        /// (referenceSetup() fills it from the CompositionPolicy).
         std::map<std::string, std::string> choice = {};
-        /// Volumes: their shadow model. Unset: from the Shadowing choice (null: None, ray: Exact;
-        /// any other makes renderReference throw). referenceSetup() sets it from the traits of
+        /// Volumes: their shadow model. Unset: the declared model of the Shadowing choice (an
+        /// implementation that only approximates its model makes renderReference throw, so that
+        /// a caller says what it measures). referenceSetup() sets it from the declared model of
         /// the renderer's choice, so that an approximation of exact shadows is measured against them.
         std::optional<Shadows> shadows = {};
         /// Volumes: their ambient term is scaled by its occlusion (the cosine-weighted hemisphere
         /// integral of the transmittance over the settings' coneStart..aoDistance). referenceSetup()
-        /// sets it from the traits of the renderer's Shadowing choice.
+        /// sets it from the declared model of the renderer's Shadowing choice.
         bool occlusion = false;
         /// Volumes: they shadow the opaque geometry: each geometry pixel's colour is scaled by
         /// the mean over the lights of the transmittance from its surface point to each light

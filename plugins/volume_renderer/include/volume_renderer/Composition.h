@@ -1,5 +1,4 @@
 #pragma once
-#include <array>
 #include <map>
 #include <string>
 #include <vector>
@@ -13,16 +12,16 @@ struct Composition
     std::map<std::string, std::string> choice;                  ///< slot -> implementation
     std::map<std::string, std::vector<std::string>> instances;  ///< template slot -> one per shape
     unsigned int lightCount = 0;                                ///< lights the shading loops over
-    /// Weighting/axes: per axis, the vec4s of curve segments (four each) the program evaluates.
-    std::array<unsigned int, 3> weightGroups = {0, 0, 0};
-    /// The Shadowing reads the opaque geometry's depth maps from the lights (the scene has
-    /// opaque geometry); otherwise that lookup is compiled out.
-    bool geometryShadows = false;
+    /// Compile-time options the chosen implementations' hooks set for this scene (macro name ->
+    /// value; ShaderFunction::compileOptions); a macro not here has its declared default.
+    std::map<std::string, std::string> defines;
+    /// The hooks' key fragments, in slot order: they tell every value of `defines` apart.
+    std::string keyFragments;
     /// A multi-volume set: one composition per member (their sample slots, clip planes and
     /// lights), marched along one ray by this composition's RayTraversal (`sum_of_media`).
     std::vector<Composition> members;
 
-    /// Full key "Slot=impl;...;ClipPosition=[box,plane];lights=N;[weightGroups=X,Y,Z;][geometryShadows=1;]" over
+    /// Full key "Slot=impl;...;ClipPosition=[box,plane];lights=N;" plus the key fragments over
     /// every slot, defaults filled in; programs are cached by the whole key.
     std::string key() const;
     /// Implementation for ordinary `slot` (CompositionPolicy::defaultImplementation when not chosen).

@@ -2,9 +2,11 @@
 #include <volume_renderer/BindContext.h>
 
 #include <volume_model/ParameterDecl.h>
+#include <volume_model/ReferenceModel.h>
 
 #include <algorithm>
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -34,6 +36,9 @@ struct TextureDecl
 
 /// A list of slot names.
 using SlotList = std::vector<std::string>;
+
+/// Settings (`--set` keys and values) of one row of `volren bench`'s default matrix.
+using BenchRow = std::vector<std::pair<std::string, std::string>>;
 
 /// How a Shading implementation uses the scene's lights.
 enum class LightUse
@@ -101,17 +106,33 @@ struct ImplementationTraits
     /// Shadowing: it samples the volume away from the view ray, so every clip shape must be
     /// known per sample (the policy puts clip planes in ClipPosition instead of ClipRay).
     bool clipsPerSample = false;
-    /// Shadowing: the light transport it approximates, which the reference renderer computes
-    /// exactly and measures it against: each light's transmittance to the sample (`shadows`)
-    /// and the ambient term scaled by the hemisphere's transmittance over its reach (`occlusion`).
-    bool shadows = false;
-    bool occlusion = false;  ///< see `shadows`
     /// Shadowing: the volume also shadows the opaque geometry: the pass scales the polygons'
     /// colour by the transmittance to the lights that its light volume (AuxData::LightVolume,
     /// one channel per light) holds where the way to each light leaves the box.
     bool shadowsGeometry = false;
     /// Other names users may give it in settings ("dvr" for dvr_front_to_back).
     std::vector<std::string> aliases = {};
+};
+
+struct Composition;
+struct RenderSettings;
+struct SceneOffer;
+
+/// What an implementation compiles in for one scene: values of its declared macros and a
+/// fragment of the program key that tells them apart (programs are cached by key).
+struct CompileOptions
+{
+    std::map<std::string, std::string> defines = {};  ///< macro name -> value
+    std::string keyFragment = {};                      ///< "name=value;" where not the default
+};
+
+/// What a compile-options hook sees: the node's settings, the scene's offer and the composition
+/// chosen so far (every slot chosen, the lights counted).
+struct CompileContext
+{
+    const RenderSettings& settings;
+    const SceneOffer& offer;
+    const Composition& composition;
 };
 
 /// One implementation of a shader-function slot: a GLSL file plus what it needs.
@@ -136,8 +157,20 @@ struct ShaderFunction
     /// Its parameters (slot and implementation are filled in at registration): what `--set`,
     /// scene files, the panel and its bind read. Keys are unique across the registry.
     std::vector<ParameterDecl> parameters = {};
+    /// Macros its GLSL reads, each with the value it has where no hook set one (compositions
+    /// made without the policy, e.g. by permutation sweeps); emitted in the program's header.
+    std::map<std::string, std::string> defines = {};
+    /// Sets this scene's values of `defines` (e.g. how many curve segments to evaluate). Unset:
+    /// the defaults hold.
+    std::function<CompileOptions(const CompileContext&)> compileOptions = {};
     std::function<void(BindContext&)> bind = {};  ///< sets this frame's uniform values and textures
     ImplementationTraits traits = {};        ///< what the composition policy knows of it
+    /// How the CPU reference models it (the reference selects its model by this). Unset: not
+    /// declared (a plugin's, or a slot the reference does not model per implementation).
+    std::optional<ReferenceModel> reference = {};
+    /// Its rows in `volren bench`'s default matrix: each chooses it, with these settings on top
+    /// (an empty row: it alone). None: the bench measures it only when asked.
+    std::vector<BenchRow> benchRows = {};
     /// Classification: makes, for a binding, the CPU mirror of its opacity over texel values: a
     /// predicate false only when every texel value in [lo, hi] classifies to zero opacity (used
     /// for empty-space skipping while that binding lasts). Unset: unknown, nothing is skipped.

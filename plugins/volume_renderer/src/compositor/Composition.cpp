@@ -33,10 +33,7 @@ std::string Composition::key() const
         key += ";";
     }
     key += "lights=" + std::to_string(lightCount) + ";";
-    if (weightGroups != std::array<unsigned int, 3>{0, 0, 0})
-        key += "weightGroups=" + std::to_string(weightGroups[0]) + "," + std::to_string(weightGroups[1]) + "," +
-               std::to_string(weightGroups[2]) + ";";
-    if (geometryShadows) key += "geometryShadows=1;";
+    key += keyFragments;
     if (!members.empty()) {
         key += "members{";
         for (const Composition& m : members) key += m.key() + "|";

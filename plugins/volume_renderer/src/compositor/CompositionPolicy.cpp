@@ -114,12 +114,6 @@ ChosenComposition CompositionPolicy::choose(const RenderSettings& settings, cons
             out.composition.choice[slot.name] = wish.chosen(slot.name, defaultImplementation(slot.name));
     chooseClips(out, settings, offer, pass);
     chooseWeighting(out, settings, pass);
-    // The opaque geometry's depth maps only where there is opaque geometry to shadow a lit volume
-    // (compiled out otherwise: a driver that runs a uniform branch's both sides, as llvmpipe,
-    // paid for the lookup at every lit sample, a fifth of a light-volume frame).
-    if (const ShaderFunction* f = _registry.find("Shadowing", out.composition.functionFor("Shadowing")))
-        out.composition.geometryShadows =
-            offer.opaqueGeometry && out.composition.lightCount > 0 && f->needsAux(AuxData::GeometryShadowMap);
     if (out.composition.functionFor("Reconstruction") == none && wish.named("VolumeStorage").empty())
         out.composition.choice["VolumeStorage"] = none;  // nothing reads voxels
     else if (offer.exceedsTextureBudget && wish.named("VolumeStorage").empty())
@@ -136,6 +130,14 @@ ChosenComposition CompositionPolicy::choose(const RenderSettings& settings, cons
                 out.composition.choice["Acceleration"] = name;
                 break;
             }
+    // What the chosen implementations compile in for this scene (their hooks, in slot order).
+    Composition& c = out.composition;
+    for (const SlotInfo& slot : slots())
+        if (const ShaderFunction* f = _registry.find(slot.name, c.functionFor(slot.name)); f && f->compileOptions) {
+            const CompileOptions options = f->compileOptions({settings, offer, c});
+            for (const auto& [name, value] : options.defines) c.defines[name] = value;
+            c.keyFragments += options.keyFragment;
+        }
     return out;
 }
 
@@ -223,13 +225,6 @@ void CompositionPolicy::chooseWeighting(ChosenComposition& out, const RenderSett
                            << std::endl;
         }
     }
-    // Weighting/axes evaluates only the segments the curves have, compiled in (a driver that runs
-    // a branch's both sides pays for every segment it could have, as much as the sample itself).
-    if (c.functionFor("Weighting") == "axes")
-        for (std::size_t axis = 0; axis < 3; ++axis) {
-            const std::size_t knots = weighting.axes[axis].knots.size();
-            c.weightGroups[axis] = knots > 1 ? unsigned((knots - 2) / 4 + 1) : 0u;
-        }
 }
 
 void CompositionPolicy::chooseClips(ChosenComposition& out, const RenderSettings& settings, const SceneOffer& offer,

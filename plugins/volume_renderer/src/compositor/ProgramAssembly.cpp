@@ -36,16 +36,18 @@ std::set<std::string> definedNames(const std::string& text)
 }
 
 /// Gives every volren_ name in `text` that is not in `shared` the member suffix, and the
-/// per-composition macros (VOLREN_LIGHT_COUNT, VOLREN_LIGHT_ARRAY) too.
-std::string renameForMember(const std::string& text, const std::set<std::string>& shared, const std::string& suffix)
+/// per-composition macros (`macros`: the light count and the implementations' defines) too.
+std::string renameForMember(const std::string& text, const std::set<std::string>& shared, const std::string& suffix,
+                            const std::set<std::string>& macros)
 {
-    static const std::regex name(R"(\b(volren_\w+|VOLREN_LIGHT_COUNT|VOLREN_LIGHT_ARRAY|VOLREN_WEIGHT_GROUPS_[XYZ]|VOLREN_GEOMETRY_SHADOWS)\b)");
+    static const std::regex name(R"(\b(volren_\w+|VOLREN_\w+)\b)");
     std::string out;
     auto last = text.cbegin();
     for (auto it = std::sregex_iterator(text.begin(), text.end(), name); it != std::sregex_iterator(); ++it) {
         out.append(last, text.cbegin() + it->position());
         out += it->str();
-        if (!shared.count(it->str())) out += suffix;
+        const bool macro = it->str().rfind("VOLREN_", 0) == 0;
+        if (macro ? macros.count(it->str()) > 0 : !shared.count(it->str())) out += suffix;
         last = text.cbegin() + it->position() + it->length();
     }
     out.append(last, text.cend());
@@ -173,18 +175,25 @@ std::string ProgramAssembly::header() const
     src << "// volren composed ray caster: " << _result.key << "\n";
     src << "#define VOLREN_LIGHT_COUNT " << _composition.lightCount << "\n";
     src << "#define VOLREN_LIGHT_ARRAY " << std::max(1u, _composition.lightCount) << "\n";
-    auto weightGroups = [&src](const Composition& c, const std::string& suffix) {
-        for (std::size_t axis = 0; axis < 3; ++axis)
-            src << "#define VOLREN_WEIGHT_GROUPS_" << "XYZ"[axis] << suffix << " " << c.weightGroups[axis] << "\n";
-        src << "#define VOLREN_GEOMETRY_SHADOWS" << suffix << " " << (c.geometryShadows ? 1 : 0) << "\n";
+    // The chosen implementations' macros, each once: the hooks' values, else the declared defaults.
+    auto defines = [&](const Composition& c, int member, const std::string& suffix) {
+        std::set<std::string> done;
+        for (const Binding& b : _result.bindings) {
+            if (b.member != member) continue;
+            for (const auto& [name, value] : b.function->defines) {
+                if (!done.insert(name).second) continue;
+                auto set = c.defines.find(name);
+                src << "#define " << name << suffix << " " << (set == c.defines.end() ? value : set->second) << "\n";
+            }
+        }
     };
-    weightGroups(_composition, "");
+    defines(_composition, -1, "");
     if (!_composition.members.empty()) src << "#define VOLREN_MEMBER_COUNT " << _composition.members.size() << "\n";
     for (std::size_t k = 0; k < _composition.members.size(); ++k) {
         const unsigned int lights = _composition.members[k].lightCount;
         src << "#define VOLREN_LIGHT_COUNT_v" << k << " " << lights << "\n";
         src << "#define VOLREN_LIGHT_ARRAY_v" << k << " " << std::max(1u, lights) << "\n";
-        weightGroups(_composition.members[k], "_v" + std::to_string(k));
+        defines(_composition.members[k], int(k), "_v" + std::to_string(k));
     }
     return src.str();
 }
@@ -272,9 +281,9 @@ void ProgramAssembly::appendMembers(const std::string& slotDeclarations)
     for (std::size_t k = 0; k < _composition.members.size(); ++k) {
         const std::string suffix = "_v" + std::to_string(k);
         const std::string of = " (member " + std::to_string(k) + ")";
-        append("slots.glsl" + of, renameForMember(slotDeclarations, _memberShared, suffix));
-        for (const auto& [name, text] : slotSources(int(k))) append(name + of, renameForMember(text, _memberShared, suffix));
-        append(glue->file + of, renameForMember(glueSource, _memberShared, suffix));
+        append("slots.glsl" + of, renameForMember(slotDeclarations, _memberShared, suffix, _memberMacros));
+        for (const auto& [name, text] : slotSources(int(k))) append(name + of, renameForMember(text, _memberShared, suffix, _memberMacros));
+        append(glue->file + of, renameForMember(glueSource, _memberShared, suffix, _memberMacros));
     }
     append("<MultiVolume dispatchers over " + std::to_string(_composition.members.size()) + " members>",
            memberDispatchers(glueSource));
@@ -337,7 +346,7 @@ void ProgramAssembly::assembleBuild(const std::string& declarations, const std::
         if (member >= 0)
             for (auto it = std::sregex_iterator(main.begin(), main.end(), ownUniform); it != std::sregex_iterator(); ++it)
                 shared.insert((*it)[1].str());
-        auto renamed = [&](const std::string& text) { return member < 0 ? text : renameForMember(text, shared, suffix); };
+        auto renamed = [&](const std::string& text) { return member < 0 ? text : renameForMember(text, shared, suffix, _memberMacros); };
         BuildProgram& build = _result.builds[member];
         std::ostringstream src;
         auto add = [&](const std::string& name, const std::string& text) {
@@ -360,6 +369,9 @@ const ShaderFunction* ProgramAssembly::assemble()
 {
     pick(_composition, -1);
     for (std::size_t k = 0; k < _composition.members.size(); ++k) pick(_composition.members[k], int(k));
+    _memberMacros = {"VOLREN_LIGHT_COUNT", "VOLREN_LIGHT_ARRAY"};
+    for (const Binding& b : _result.bindings)
+        for (const auto& define : b.function->defines) _memberMacros.insert(define.first);
     const std::string decls = declarations();
     _src << header();
     _result.sourceNames.push_back("<generated declarations>");

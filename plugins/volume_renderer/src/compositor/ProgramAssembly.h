@@ -51,6 +51,7 @@ private:
     const ShaderFunction* _raySetup = nullptr;
     std::ostringstream _src;
     std::set<std::string> _memberShared;  ///< a set's: memberSharedNames(), computed once
+    std::set<std::string> _memberMacros;  ///< macros each member has its own of (light count, defines)
 };
 
 }  // namespace volren

@@ -1,7 +1,9 @@
 #include <volume_renderer/ShaderFunctionRegistry.h>
 #include <volume_renderer/Slots.h>
 
+#include <volume_model/DeclarationLoader.h>
 #include <volume_model/ParameterCatalog.h>
+#include <volume_model/ReferenceModel.h>
 #include <volume_model/ReadVolume.h>
 
 #include <osgDB/FileNameUtils>
@@ -19,8 +21,9 @@ namespace volren {
 
 namespace {
 
-/// The model's parameter catalog is filled by the registry: a look-up there loads it.
-[[maybe_unused]] const bool catalogLoader = (ParameterCatalog::instance().setLoader([] { ShaderFunctionRegistry::instance(); }), true);
+/// The model's catalogs of parameters and reference models are filled by the registry: a
+/// look-up there loads it.
+[[maybe_unused]] const bool declarationLoader = (setDeclarationLoader([] { ShaderFunctionRegistry::instance(); }), true);
 
 }  // namespace
 
@@ -131,6 +134,7 @@ void ShaderFunctionRegistry::add(ShaderFunction function)
         p.implementations = {function.name};
         ParameterCatalog::instance().declare(p);
     }
+    if (function.reference) ReferenceModelCatalog::instance().declare(function.slot, function.name, *function.reference);
     const std::string slot = function.slot, name = function.name;
     _functions[slot][name] = std::move(function);
 }

@@ -54,7 +54,8 @@ void registerAccelerationFunctions(ShaderFunctionRegistry& registry)
     registry.add({.slot = "Acceleration",
                   .name = "null",
                   .includes = {"Acceleration/every_step.glsl"},
-                  .traits = {.calls = SlotList{}}});
+                  .traits = {.calls = SlotList{}},
+                  .benchRows = {{}}});  // skipping off: the same image, the cost of marching all
 
     // The pass builds the grids from the volume's macrocell value ranges with the
     // Reconstruction's footprint as apron (and, for opacity, the Classification's CPU mirror).
@@ -70,6 +71,7 @@ void registerAccelerationFunctions(ShaderFunctionRegistry& registry)
                                            {"Acceleration/occupancy_leap.glsl"});
     adaptive.uniforms.push_back({"volren_adaptiveSteps", "int", ""});
     adaptive.traits.approximates = true;
+    adaptive.benchRows = {{}, {{"adaptiveSteps", "8"}}, {{"adaptiveTolerance", "0.02"}}};
     adaptive.parameters = {{.key = "adaptiveTolerance", .defaultValue = 1.0 / 256.0, .lo = 0.0, .hi = 1.0,
                             .help = "largest change of the classified RGBA over a macrocell that counts as homogeneous",
                             .label = "adaptive tolerance", .panel = {PanelHint::LogSlider, 1e-4, 0.1}},

@@ -162,6 +162,7 @@ void registerClassificationFunctions(ShaderFunctionRegistry& registry)
                           c.texture("volren_premultipliedTable", c.aux.at(AuxData::PremultipliedTable).get());
                       },
                   .traits = leaf,
+                  .benchRows = {{}},
                   .mayShow = tableMirror,  // the same opacities as tf1d
                   .variation = tableVariation});
 

@@ -15,7 +15,11 @@ void registerGradientFunctions(ShaderFunctionRegistry& registry)
                       .bind = bindings::bindGeometry,
                       .traits = {.calls = SlotList{"GradientInput"},
                                  .required = {"GradientInput"},
-                                 .aliases = name == std::string("central9") ? SlotList{"central-9"} : SlotList{}}});
+                                 .aliases = name == std::string("central9") ? SlotList{"central-9"} : SlotList{}},
+                      // The cheapest and the widest against the default (central).
+                      .benchRows = name == std::string("forward") || name == std::string("central9")
+                                       ? std::vector<BenchRow>{{}}
+                                       : std::vector<BenchRow>{}});
 }
 
 }  // namespace volren

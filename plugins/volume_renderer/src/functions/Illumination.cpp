@@ -7,6 +7,12 @@ namespace volren {
 
 namespace {
 
+/// Computed by the reference as `model`, to float precision.
+ReferenceModel exactly(const std::string& model)
+{
+    return {.fidelity = ReferenceModel::Fidelity::Exact, .model = model};
+}
+
 const ParameterDecl specular = {.key = "specular", .defaultValue = 0.3, .lo = 0.0, .hi = 10.0,
                                 .help = "specular strength", .panel = {PanelHint::Slider, 0.0, 2.0}};
 
@@ -14,8 +20,12 @@ const ParameterDecl specular = {.key = "specular", .defaultValue = 0.3, .lo = 0.
 
 void registerIlluminationFunctions(ShaderFunctionRegistry& registry)
 {
-    registry.add({.slot = "Illumination", .name = "null", .traits = {.calls = SlotList{}}});
-    registry.add({.slot = "Illumination", .name = "lambert", .traits = {.calls = SlotList{}}});
+    registry.add({.slot = "Illumination", .name = "null", .traits = {.calls = SlotList{}}, .reference = exactly("no light")});
+    registry.add({.slot = "Illumination",
+                  .name = "lambert",
+                  .traits = {.calls = SlotList{}},
+                  .reference = exactly("lambert diffuse"),
+                  .benchRows = {{}}});
     registry.add({.slot = "Illumination",
                   .name = "blinn_phong",
                   .uniforms = {{"volren_specular", "float", ""}, {"volren_shininess", "float", ""}},
@@ -27,7 +37,8 @@ void registerIlluminationFunctions(ShaderFunctionRegistry& registry)
                           c.uniform("volren_specular", float(c.settings.number("specular")));
                           c.uniform("volren_shininess", float(c.settings.number("shininess")));
                       },
-                  .traits = {.calls = SlotList{}, .aliases = {"blinnphong", "blinn-phong", "phong"}}});
+                  .traits = {.calls = SlotList{}, .aliases = {"blinnphong", "blinn-phong", "phong"}},
+                  .reference = exactly("diffuse + blinn-phong highlight")});
     registry.add({.slot = "Illumination",
                   .name = "cook_torrance",
                   .uniforms = {{"volren_specular", "float", ""}, {"volren_roughness", "float", ""}},
@@ -39,7 +50,9 @@ void registerIlluminationFunctions(ShaderFunctionRegistry& registry)
                           c.uniform("volren_specular", float(c.settings.number("specular")));
                           c.uniform("volren_roughness", float(c.settings.number("roughness")));
                       },
-                  .traits = {.calls = SlotList{}, .aliases = {"cooktorrance", "cook-torrance"}}});
+                  .traits = {.calls = SlotList{}, .aliases = {"cooktorrance", "cook-torrance"}},
+                  .reference = exactly("diffuse + cook-torrance ggx highlight"),
+                  .benchRows = {{}}});
     // Volume scattering (no normal): the phase function between the light and the view.
     registry.add({.slot = "Illumination",
                   .name = "henyey_greenstein",
@@ -48,7 +61,8 @@ void registerIlluminationFunctions(ShaderFunctionRegistry& registry)
                                   .help = "Henyey-Greenstein g: 0 isotropic, > 0 forward, < 0 backward scattering",
                                   .label = "anisotropy g", .panel = {PanelHint::Slider, -0.9, 0.9}}},
                   .bind = [](BindContext& c) { c.uniform("volren_anisotropy", float(c.settings.number("anisotropy"))); },
-                  .traits = {.calls = SlotList{}, .aliases = {"hg", "phase", "henyeygreenstein", "scattering"}}});
+                  .traits = {.calls = SlotList{}, .aliases = {"hg", "phase", "henyeygreenstein", "scattering"}},
+                  .reference = exactly("henyey-greenstein phase")});
 }
 
 }  // namespace volren

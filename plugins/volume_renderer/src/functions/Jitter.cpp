@@ -37,14 +37,15 @@ osg::Texture2D* jitterTile()
 void registerJitterFunctions(ShaderFunctionRegistry& registry)
 {
     const ImplementationTraits leaf{.calls = SlotList{}};
-    registry.add({.slot = "Jitter", .name = "null", .traits = leaf});
+    registry.add({.slot = "Jitter", .name = "null", .traits = leaf, .benchRows = {{}}});
     registry.add({.slot = "Jitter", .name = "hash", .traits = leaf});
     registry.add({.slot = "Jitter",
                   .name = "texture",
                   .textures = {{"volren_jitterTexture", "sampler2D"}},
                   .needs = {AuxData::JitterTexture},
                   .bind = [](BindContext& c) { c.texture("volren_jitterTexture", jitterTile()); },
-                  .traits = leaf});
+                  .traits = leaf,
+                  .benchRows = {{}}});
 }
 
 }  // namespace volren

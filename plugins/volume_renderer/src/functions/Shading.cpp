@@ -13,8 +13,9 @@ namespace {
 
 using bindings::operator+;
 
-/// A shading lit by the scene's lights through the chosen Illumination (Shading/lights.glsl).
-ShaderFunction lit(const std::string& name, std::vector<UniformDecl> extra = {})
+/// A shading lit by the scene's lights through the chosen Illumination (Shading/lights.glsl),
+/// which the reference computes as `model`.
+ShaderFunction lit(const std::string& name, const std::string& model, std::vector<UniformDecl> extra = {})
 {
     return {.slot = "Shading",
             .name = name,
@@ -27,7 +28,8 @@ ShaderFunction lit(const std::string& name, std::vector<UniformDecl> extra = {})
                 },
             .traits = {.calls = SlotList{"Gradient", "Illumination", "Shadowing"},
                        .required = {"Illumination"},
-                       .lights = LightUse::Required}};
+                       .lights = LightUse::Required},
+            .reference = ReferenceModel{.fidelity = ReferenceModel::Fidelity::Exact, .model = model}};
 }
 
 /// What the debug shading shows, in the order of its GLSL switch (volren_debugView).
@@ -37,13 +39,16 @@ const std::vector<std::string> debugViews = {"scalar", "position", "classificati
 
 void registerShadingFunctions(ShaderFunctionRegistry& registry)
 {
-    registry.add({.slot = "Shading", .name = "null", .traits = {.calls = SlotList{}}});
+    registry.add({.slot = "Shading",
+                  .name = "null",
+                  .traits = {.calls = SlotList{}},
+                  .reference = ReferenceModel{.fidelity = ReferenceModel::Fidelity::Exact, .model = "unlit"}});
     // Every lit shading adds this fraction of the classified colour (bindings::bindLights).
     registry.addSlotParameter("Shading", {.key = "ambient", .defaultValue = 0.2, .lo = 0.0, .hi = 1.0,
                                           .help = "ambient light, as a fraction of the classified colour"});
-    registry.add(lit("lighting"));
+    registry.add(lit("lighting", "lit"));
 
-    ShaderFunction threshold = lit("lighting_threshold", {{"volren_shadingThreshold", "float", ""}});
+    ShaderFunction threshold = lit("lighting_threshold", "lit above threshold", {{"volren_shadingThreshold", "float", ""}});
     threshold.bind = [](BindContext& c) {
         bindings::bindGeometry(c);
         bindings::bindLights(c);
@@ -55,7 +60,7 @@ void registerShadingFunctions(ShaderFunctionRegistry& registry)
     registry.add(threshold);
 
     // Lit on boundaries only, weighted by the gradient magnitude against volren_gradientScale.
-    ShaderFunction surface = lit("lighting_surface", {bindings::gradientScale});
+    ShaderFunction surface = lit("lighting_surface", "lit on surfaces", {bindings::gradientScale});
     surface.bind = [](BindContext& c) {
         bindings::bindGeometry(c);
         bindings::bindLights(c);
@@ -79,7 +84,8 @@ void registerShadingFunctions(ShaderFunctionRegistry& registry)
                           c.uniform("volren_debugView",
                                     int(std::find(debugViews.begin(), debugViews.end(), view) - debugViews.begin()));
                       },
-                  .traits = {.calls = SlotList{"Gradient", "Reconstruction"}, .lights = LightUse::Optional}});
+                  .traits = {.calls = SlotList{"Gradient", "Reconstruction"}, .lights = LightUse::Optional},
+                  .reference = ReferenceModel{.why = "its views show data (positions, gradients, normals), not light"}});
 }
 
 }  // namespace volren

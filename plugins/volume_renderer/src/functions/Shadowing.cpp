@@ -69,6 +69,16 @@ void bindGeometryShadows(BindContext& c)
     c.texture("volren_geometryShadow", count > 0 ? map->second.get() : none.get());
 }
 
+/// The opaque geometry's shadow maps are read only where there is opaque geometry to shadow a lit
+/// volume (compiled out otherwise: a driver that runs a uniform branch's both sides, as llvmpipe,
+/// paid for the lookup at every lit sample, a fifth of a light-volume frame).
+const std::map<std::string, std::string> geometryShadowDefine = {{"VOLREN_GEOMETRY_SHADOWS", "0"}};
+CompileOptions geometryShadowOption(const CompileContext& c)
+{
+    const bool on = c.offer.opaqueGeometry && c.composition.lightCount > 0;
+    return {.defines = {{"VOLREN_GEOMETRY_SHADOWS", on ? "1" : "0"}}, .keyFragment = on ? "geometryShadows=1;" : ""};
+}
+
 /// The shadow march's step, shared by every method that marches towards the lights.
 const ParameterDecl shadowStepFactor = {
     .key = "shadowStepFactor", .defaultValue = 1.0, .lo = 0.0, .hi = 1e3, .openLow = true,
@@ -105,7 +115,10 @@ const ParameterDecl aoDistance = {
 
 void registerShadowingFunctions(ShaderFunctionRegistry& registry)
 {
-    registry.add({.slot = "Shadowing", .name = "null", .traits = {.calls = SlotList{}}});
+    registry.add({.slot = "Shadowing",
+                  .name = "null",
+                  .traits = {.calls = SlotList{}},
+                  .reference = ReferenceModel{.fidelity = ReferenceModel::Fidelity::Exact, .model = "unshadowed"}});
 
     // Shadow rays: a march towards each light per lit sample, with the view ray's sampling.
     registry.add({.slot = "Shadowing",
@@ -118,6 +131,8 @@ void registerShadowingFunctions(ShaderFunctionRegistry& registry)
                   .textures = {geometryShadowTexture},
                   .needs = {AuxData::GeometryShadowMap},
                   .parameters = {shadowStepFactor, shadowCutoff},
+                  .defines = geometryShadowDefine,
+                  .compileOptions = geometryShadowOption,
                   .bind =
                       [](BindContext& c) {
                           bindings::bindGeometry(c);
@@ -129,8 +144,9 @@ void registerShadowingFunctions(ShaderFunctionRegistry& registry)
                       },
                   .traits = {.calls = SlotList{"Reconstruction", "Classification", "ClipPosition", "Weighting"},
                              .clipsPerSample = true,
-                             .shadows = true,
-                             .aliases = {"shadowray", "shadow_ray", "rays"}}});
+                             .aliases = {"shadowray", "shadow_ray", "rays"}},
+                  // The definition itself: the transmittance to each light, marched.
+                  .reference = ReferenceModel{.fidelity = ReferenceModel::Fidelity::Exact, .model = "exact shadows"}});
 
     // Propagated light volume: each light's transmittance in a half-float volume, built on the GPU
     // slice by slice (light_volume_build.comp) whenever the light, the TF, the volume or a clip
@@ -147,6 +163,8 @@ void registerShadowingFunctions(ShaderFunctionRegistry& registry)
                                  {.key = "lightVolumeScale", .defaultValue = 0.5, .lo = 0.0, .hi = 1.0, .openLow = true,
                                   .help = "resolution of the light volume as a fraction of the volume's along each axis",
                                   .label = "light volume scale", .panel = {PanelHint::Slider, 0.1, 1.0}}},
+                  .defines = geometryShadowDefine,
+                  .compileOptions = geometryShadowOption,
                   .bind =
                       [](BindContext& c) {
                           bindings::bindGeometry(c);
@@ -159,9 +177,12 @@ void registerShadowingFunctions(ShaderFunctionRegistry& registry)
                       },
                   .traits = {.calls = SlotList{"Reconstruction", "Classification", "ClipPosition", "Weighting"},
                              .clipsPerSample = true,
-                             .shadows = true,
                              .shadowsGeometry = true,
-                             .aliases = {"lightvolume", "light-volume", "propagated"}}});
+                             .aliases = {"lightvolume", "light-volume", "propagated"}},
+                  // Trilinear in a half-resolution light volume (MultiVolumeShadows: within 4e-3).
+                  .reference = ReferenceModel{.fidelity = ReferenceModel::Fidelity::Approximate,
+                                              .model = "exact shadows",
+                                              .bound = 4e-3}});
 
     // Cone tracing through the opacity mip chain: soft shadows (cone), and with directional
     // ambient occlusion (cone_ao). The chain is built on the GPU (cone_build.comp, then
@@ -207,13 +228,18 @@ void registerShadowingFunctions(ShaderFunctionRegistry& registry)
                       .textures = {{"volren_opacityMips", "sampler3D"}, geometryShadowTexture},
                       .needs = {AuxData::OpacityMipChain, AuxData::GeometryShadowMap},
                       .parameters = std::string(name) == "cone" ? coneParameters : withAoDistance,
+                      .defines = geometryShadowDefine,
+                      .compileOptions = geometryShadowOption,
                       .bind = bindCone,
                       .traits = {.calls = SlotList{"Reconstruction", "Classification", "ClipPosition", "Weighting"},
                                  .clipsPerSample = true,
-                                 .shadows = true,
-                                 .occlusion = std::string(name) == "cone_ao",
                                  .aliases = std::string(name) == "cone" ? std::vector<std::string>{"cones", "cone_shadows"}
-                                                                        : std::vector<std::string>{"cones_ao", "cone+ao"}}});
+                                                                        : std::vector<std::string>{"cones_ao", "cone+ao"}},
+                      // Filtered opacity along a cone (MultiVolumeShadows: within 5e-3).
+                      .reference = ReferenceModel{.fidelity = ReferenceModel::Fidelity::Approximate,
+                                                  .model = std::string(name) == "cone" ? "exact shadows"
+                                                                                       : "exact shadows and occlusion",
+                                                  .bound = 5e-3}});
 }
 
 }  // namespace volren

@@ -51,7 +51,8 @@ void registerVolumeStorageFunctions(ShaderFunctionRegistry& registry)
                               c.uniformElement("volren_pageTableZ", 16, i, float(level.tableZ));
                           }
                       },
-                  .traits = {.calls = SlotList{}, .withinBudget = true}});
+                  .traits = {.calls = SlotList{}, .withinBudget = true},
+                  .benchRows = {{}}});  // the cost of the page table lookup when a volume is bricked
 }
 
 }  // namespace volren

@@ -10,7 +10,10 @@ namespace volren {
 
 void registerWeightingFunctions(ShaderFunctionRegistry& registry)
 {
-    registry.add({.slot = "Weighting", .name = "null", .traits = {.calls = SlotList{}}});
+    registry.add({.slot = "Weighting",
+                  .name = "null",
+                  .traits = {.calls = SlotList{}},
+                  .reference = ReferenceModel{.fidelity = ReferenceModel::Fidelity::Exact, .model = "unweighted"}});
 
     // The node's curves weightX, weightY, weightZ as hinges (Weighting/axes.glsl): up to
     // WeightCurve::maxKnots - 1 (15) segments per axis, four per vec4.
@@ -21,7 +24,10 @@ void registerWeightingFunctions(ShaderFunctionRegistry& registry)
                                      {"volren_weightLength", "vec4", "12"},
                                      {"volren_weightSlope", "vec4", "12"},
                                      {"volren_weightBase", "vec3", ""}},
-                        .traits = {.calls = SlotList{}}};
+                        .traits = {.calls = SlotList{}},
+                        .reference = ReferenceModel{.fidelity = ReferenceModel::Fidelity::Exact, .model = "axis curves"},
+                        // The cost of the weights at every sample.
+                        .benchRows = {{{"weightZ", "ramp:0.1"}}}};
     for (const char* axis : {"X", "Y", "Z"})
         axes.parameters.push_back({.key = std::string("weight") + axis, .type = ParameterType::Curve,
                                    .defaultValue = WeightCurve{},
@@ -30,6 +36,25 @@ void registerWeightingFunctions(ShaderFunctionRegistry& registry)
                                            "first and last 5% of the slices)",
                                    .label = std::string("weight ") + char(std::tolower(*axis)),
                                    .panel = {PanelHint::Text}});
+    // Only the segments the curves have are evaluated, compiled in (a driver that runs a branch's
+    // both sides pays for every segment it could have, as much as for the sample itself): per
+    // axis, the vec4s of segments (four each).
+    axes.defines = {{"VOLREN_WEIGHT_GROUPS_X", "0"}, {"VOLREN_WEIGHT_GROUPS_Y", "0"}, {"VOLREN_WEIGHT_GROUPS_Z", "0"}};
+    axes.compileOptions = [](const CompileContext& c) {
+        const SpatialWeighting weighting = spatialWeighting(c.settings);
+        CompileOptions options;
+        std::string groups;
+        bool any = false;
+        for (std::size_t axis = 0; axis < 3; ++axis) {
+            const std::size_t knots = weighting.axes[axis].knots.size();
+            const unsigned int n = knots > 1 ? unsigned((knots - 2) / 4 + 1) : 0u;
+            options.defines[std::string("VOLREN_WEIGHT_GROUPS_") + "XYZ"[axis]] = std::to_string(n);
+            groups += (axis ? "," : "") + std::to_string(n);
+            any = any || n > 0;
+        }
+        if (any) options.keyFragment = "weightGroups=" + groups + ";";
+        return options;
+    };
     axes.bind = [](BindContext& c) {
         const SpatialWeighting weighting = spatialWeighting(c.settings);
         osg::Vec3f base;

@@ -6,25 +6,30 @@ namespace volren {
 
 namespace {
 
-/// Whether the Shadowing of `composition` (or of a set member) reads the geometry shadow maps.
-bool readsGeometryShadows(const Composition& composition)
+/// Whether a lit implementation of `composition` (or of a set member) needs the geometry's
+/// shadow maps.
+bool readsGeometryShadows(const Composition& composition, const ShaderFunctionRegistry& registry)
 {
-    if (composition.geometryShadows) return true;
+    if (composition.lightCount > 0)
+        for (const auto& [slot, name] : composition.choice)
+            if (const ShaderFunction* f = registry.find(slot, name); f && f->needsAux(AuxData::GeometryShadowMap))
+                return true;
     for (const Composition& member : composition.members)
-        if (readsGeometryShadows(member)) return true;
+        if (readsGeometryShadows(member, registry)) return true;
     return false;
 }
 
 }  // namespace
 
 void cullGeometryShadows(osgUtil::CullVisitor& cv, osg::Group& scene, std::vector<VolumeCandidate>& candidates,
-                         const std::vector<ChosenComposition>& chosen, GeometryShadowMaps& maps)
+                         const std::vector<ChosenComposition>& chosen, const ShaderFunctionRegistry& registry,
+                         GeometryShadowMaps& maps)
 {
     std::vector<std::size_t> readers;
     osg::BoundingBoxd receivers;
     for (std::size_t i = 0; i < candidates.size(); ++i) {
         const VolumeCandidate& c = candidates[i];
-        if (!c.offer.opaqueGeometry || c.offer.lights.empty() || !readsGeometryShadows(chosen[i].composition)) continue;
+        if (!c.offer.opaqueGeometry || c.offer.lights.empty() || !readsGeometryShadows(chosen[i].composition, registry)) continue;
         readers.push_back(i);
         receivers.expandBy(c.bound);
     }

@@ -13,6 +13,7 @@ namespace volren {
 /// a scene with opaque geometry), over their boxes, and gives each of those its matrices and the
 /// maps' texture (VolumeCandidate::geometryShadowMatrices, geometryShadowMap).
 void cullGeometryShadows(osgUtil::CullVisitor& cv, osg::Group& scene, std::vector<VolumeCandidate>& candidates,
-                         const std::vector<ChosenComposition>& chosen, GeometryShadowMaps& maps);
+                         const std::vector<ChosenComposition>& chosen, const ShaderFunctionRegistry& registry,
+                         GeometryShadowMaps& maps);
 
 }  // namespace volren

@@ -172,7 +172,7 @@ void VolumeScene::traverse(osg::NodeVisitor& nv)
     ++p.cull;
     p.screen.beginCull(*cv, p.cull);
     p.textures.setBrickStreaming(std::size_t(pass.uploadBudgetMB * 1048576.0), !pass.streamBricks);
-    cullGeometryShadows(*cv, *this, candidates, chosen, p.geometryShadows);
+    cullGeometryShadows(*cv, *this, candidates, chosen, _policy.registry(), p.geometryShadows);
     std::set<std::string> keys;
     for (const RayGroup& group : _policy.rayGroups(bounds, compositions, forcedComposition.has_value())) {
         std::vector<const VolumeNode*> nodes;
