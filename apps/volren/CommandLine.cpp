@@ -74,6 +74,7 @@ RenderOptions parseRenderOptions(const std::vector<std::string>& args, bool requ
             if (x == std::string::npos) throw UsageError("--size: expected WxH, got '" + s + "'");
             o.width = parseInt(s.substr(0, x), "--size width", 1, 16384);
             o.height = parseInt(s.substr(x + 1), "--size height", 1, 16384);
+            o.sizeGiven = true;
         } else if (a == "--eye") o.eye = parseVec3(value(i), "--eye");
         else if (a == "--center") o.center = parseVec3(value(i), "--center");
         else if (a == "--up") o.up = parseVec3(value(i), "--up");

@@ -26,6 +26,7 @@ struct RenderOptions
     std::map<std::size_t, Placement> placements;  ///< --place N:SPEC, by input index (0-based here, 1-based on the line)
     std::string output;                     ///< image file (extension picks the format)
     int width = 512, height = 512;          ///< --size WxH
+    bool sizeGiven = false;                 ///< --size was given (volren view opens larger without)
     std::optional<osg::Vec3d> eye, center, up;  ///< --eye/--center/--up
     std::optional<double> fov;              ///< --fov DEG (vertical)
     bool ortho = false;                     ///< --ortho fit|HEIGHT: parallel projection

@@ -68,9 +68,40 @@ struct Grab : osg::Camera::DrawCallback
 
 }  // namespace
 
+namespace {
+
+/// Where the panels go: a column on the left (the transfer-function editor or the channels above,
+/// the time player, then the settings), the scene framed in the rest of the window, so that no
+/// panel covers the volume or another panel. A window too small for that (--size) gets none: the
+/// panels float over the scene in its corners.
+struct PanelColumn
+{
+    int width = 0;  ///< pixels; 0: no column
+    float playerY = 400.0f, settingsY = 495.0f;
+};
+
+PanelColumn panelColumn(int width, int height)
+{
+    PanelColumn c;
+    if (height >= 960 && width - 660 >= height / 2) c.width = 660;  // the editor's 640 and margins
+    return c;
+}
+
+/// `regionProjection` (it frames the scene for the window right of the column) as the window's
+/// projection: the same pixels per unit, the frame's centre moved into that region.
+osg::Matrixd besideColumn(const osg::Matrixd& regionProjection, const PanelColumn& column, int width)
+{
+    const double share = double(width - column.width) / width;
+    return regionProjection * osg::Matrixd::scale(share, 1.0, 1.0) *
+           osg::Matrixd::translate(double(column.width) / width, 0.0, 0.0);
+}
+
+}  // namespace
+
 int viewCommand(const std::vector<std::string>& args)
 {
-    const RenderOptions options = parseRenderOptions(args, false);
+    RenderOptions options = parseRenderOptions(args, false);
+    if (!options.sizeGiven) options.width = 1600, options.height = 960;  // room for the panels beside the scene
     const char* display = std::getenv("DISPLAY");
     if (!display || !*display)
         throw std::runtime_error("volren view needs a display and DISPLAY is not set; use 'volren render' for images");
@@ -99,6 +130,8 @@ int viewCommand(const std::vector<std::string>& args)
     // The transfer-function editor of the first volume, drawn over the scene.
     const std::vector<VolumeNode*> nodes = findVolumeNodes(*root);
     VolumeNode* node = nodes.empty() ? nullptr : nodes.front();
+    const bool panels = node && node->getTransferFunction();
+    const PanelColumn column = panels ? panelColumn(options.width, options.height) : PanelColumn{};
     std::unique_ptr<TransferFunctionEditor> editor;
     std::unique_ptr<ChannelPanel> channels;  // a multi-channel volume: its channels, one editor each
     std::unique_ptr<RenderSettingsPanel> panel;
@@ -106,7 +139,7 @@ int viewCommand(const std::vector<std::string>& args)
     TimePrefetcher prefetcher(*root, std::size_t(1) << 30);  // the next time points, up to 1 GiB of copies
     player.setPrefetcher(&prefetcher);
     osg::ref_ptr<ImGuiOverlay> overlay;
-    if (node && node->getTransferFunction()) {
+    if (panels) {
         if (node->showsChannels())
             channels = std::make_unique<ChannelPanel>(node);
         else
@@ -125,13 +158,16 @@ int viewCommand(const std::vector<std::string>& args)
             return chosen;
         };
         panel = std::make_unique<RenderSettingsPanel>(node, choices, drawnWith);
-        overlay = new ImGuiOverlay([&editor, &channels, &panel, &player, scene = root.get()] {
+        overlay = new ImGuiOverlay([&editor, &channels, &panel, &player, column, scene = root.get()] {
+            const ImVec2 display = ImGui::GetIO().DisplaySize;
             ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
             if (channels) channels->draw();
             else editor->draw();
-            ImGui::SetNextWindowPos(ImVec2(10, ImGui::GetIO().DisplaySize.y - 140), ImGuiCond_FirstUseEver);
+            ImGui::SetNextWindowPos(column.width ? ImVec2(10, column.playerY) : ImVec2(10, display.y - 140),
+                                    ImGuiCond_FirstUseEver);
             player.draw();  // a time series: slider, play/pause
-            ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x - 410, 10), ImGuiCond_FirstUseEver);
+            ImGui::SetNextWindowPos(column.width ? ImVec2(10, column.settingsY) : ImVec2(display.x - 410, 10),
+                                    ImGuiCond_FirstUseEver);
             panel->draw();
             ImGui::SetNextWindowPos(ImVec2(10, ImGui::GetIO().DisplaySize.y - 40), ImGuiCond_Always);
             ImGui::Begin("frame", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize);
@@ -150,14 +186,15 @@ int viewCommand(const std::vector<std::string>& args)
     // Home (the space bar) is the framed view volren render would take, not OSG's bounding sphere.
     osg::ref_ptr<Trackball> trackball = new Trackball;
     {
-        const CameraView framed = frameScene(*root, cameraRequest(options), double(options.width) / options.height);
+        const CameraView framed =
+            frameScene(*root, cameraRequest(options), double(options.width - column.width) / options.height);
         osg::Vec3d eye, ahead, up;
         framed.view.getLookAt(eye, ahead, up, 1.0);
         const osg::Vec3d forward = ahead - eye;  // the trackball turns about the box centre's depth
         const osg::Vec3d centre = eye + forward * std::max((sceneBoundingBox(*root).center() - eye) * forward, 1e-6);
         trackball->setAutoComputeHomePosition(false);
         trackball->setHomePosition(eye, centre, up);
-        viewer.getCamera()->setProjectionMatrix(framed.projection);
+        viewer.getCamera()->setProjectionMatrix(besideColumn(framed.projection, column, options.width));
     }
     viewer.setCameraManipulator(trackball.get());
     viewer.addEventHandler(new osgViewer::StatsHandler);          // 's': frame time
@@ -168,7 +205,8 @@ int viewCommand(const std::vector<std::string>& args)
     // OSG's default state (fixed-function matrices and vertex arrays), as in any OSG viewer: the
     // volume proxies feed their own matrix, and polygon models keep their normals and colours.
     if (!options.screenshot.empty()) {  // headless documentation: N frames, the window to a file
-        setUpCamera(*viewer.getCamera(), *root, options, double(options.width) / options.height);
+        setUpCamera(*viewer.getCamera(), *root, options, double(options.width - column.width) / options.height);
+        viewer.getCamera()->setProjectionMatrix(besideColumn(viewer.getCamera()->getProjectionMatrix(), column, options.width));
         viewer.setCameraManipulator(nullptr);
         osg::ref_ptr<Grab> grab = new Grab;
         for (int i = 0; i < std::max(options.frames, 3); ++i) viewer.frame();
