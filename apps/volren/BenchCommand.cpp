@@ -154,6 +154,7 @@ struct BenchOptions
     double tolerance = 1e-3;
     bool vtk = false;
     bool checkFront = false;  ///< fail when a row beats the default on both axes
+    bool listConfigs = false;  ///< print the configurations' names and settings, run none
     std::string tf;           ///< --tf FILE: every volume's transfer function (as volren render's)
     ReferenceOptions::Gradient normals = ReferenceOptions::Gradient::CentralDifferences;
 };
@@ -191,6 +192,8 @@ BenchOptions parseBenchOptions(const std::vector<std::string>& args)
             if (!(o.tolerance > 0.0 && o.tolerance < 1.0)) throw UsageError("--tolerance: must be in (0, 1)");
         } else if (a == "--check-front") {
             o.checkFront = true;
+        } else if (a == "--list-configs") {
+            o.listConfigs = true;
         } else if (a == "--vtk") {
             o.vtk = true;
         } else if (a == "--tf") {
@@ -435,6 +438,14 @@ int benchCommand(const std::vector<std::string>& args)
 {
     const BenchOptions options = parseBenchOptions(args);
     const std::vector<BenchConfig> matrix = chosenConfigs(options);
+    if (options.listConfigs) {  // the matrix: its rows, as --configs names them
+        for (const BenchConfig& config : matrix) {
+            std::cout << config.name;
+            for (const auto& [key, value] : config.settings) std::cout << "  --set " << key << "=" << value;
+            std::cout << "\n";
+        }
+        return 0;
+    }
     BenchReport report;
     report.timingNote = "frame_ms: median draw time (first draw call to glFinish) over the frames after 2 warm-up "
                         "frames; gpu_ms: GL_TIME_ELAPSED (on Mesa llvmpipe it misses rasterisation); cpu_ms: the "

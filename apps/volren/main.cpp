@@ -50,8 +50,9 @@ const std::vector<std::pair<std::string, std::string>>& commandUsages()
         {"shader", "  volren shader [INPUT ...] [--set KEY=VALUE ...]   print each volume's composed ray caster\n"},
         {"bench",
          "  volren bench [DATASET ...] [--size WxH[,WxH...]] [--frames N] [--out DIR] [--configs 'A;B'] [--vtk] [--tf FILE]\n"
-         "                [--tolerance T] [--normals central|exact] [--check-front]   speed against accuracy: table, CSV,\n"
-         "                JSON, plot; --check-front fails when a row beats the default on both axes;\n"
+         "                [--tolerance T] [--normals central|exact] [--check-front] [--list-configs]   speed against\n"
+         "                accuracy: table, CSV, JSON, plot; --check-front fails when a row beats the default on both\n"
+         "                axes; --list-configs prints the matrix (settings, then each implementation's declared rows);\n"
          "                DATASET: an input, or inputs joined by '+' (ct.nii.gz+tool.obj) measured as one scene\n"},
         {"permutations",
          "  volren permutations [--list] [--compile | --render] [--pairwise] [--max-instances N]\n"
