@@ -10,6 +10,7 @@
 #include <volume_model/ClipPlaneNode.h>
 #include <volume_model/DefaultScene.h>
 #include <volume_reference/ReferenceSetup.h>
+#include <volume_model/ReferenceModel.h>
 
 #include <cmath>
 
@@ -171,6 +172,44 @@ TEST_F(Shadowing, HenyeyGreensteinMatchesItsReferenceModelForwardAndBackward)
         double change = 0.0;
         for (std::size_t i = 0; i < truth.rgba.size(); ++i) change = std::max(change, std::abs(truth.rgba[i] - isotropic.rgba[i]));
         EXPECT_GT(change, 0.05) << "g " << g;
+    }
+}
+
+TEST_F(Shadowing, SchlickFollowsItsClosedFormAndStaysWithinItsBoundOfTheHenyeyGreensteinModel)
+{
+    osg::ref_ptr<Volume> block = constantVolume(VoxelType::UInt8, {depthVoxels, depthVoxels, depthVoxels}, 100);
+    osg::ref_ptr<TransferFunction> tf = constantTransferFunction(osg::Vec4(0.9f, 0.6f, 0.3f, float(alpha)));
+    auto scene = [&](double g, const osg::Vec4& light) {
+        osg::ref_ptr<VolumeScene> s = lit(block.get(), tf.get(), "ray", 1.0, {light});
+        VolumeNode* node = findVolumeNodes(*s)[0];
+        node->settings.functions["Illumination"] = "schlick";
+        node->settings.parameters["anisotropy"] = g;
+        return s;
+    };
+    // Its own closed form, against g = 0: from the viewer (cos = -1) (1 - k) / (1 + k), from the
+    // side (cos = 0) 1 - k^2, with k = 1.55 g - 0.55 g^3.
+    for (const auto& [light, cosTheta] : {std::pair{osg::Vec4(0, 0, 1, 0), -1.0}, std::pair{osg::Vec4(-1, 0, 0, 0), 0.0}}) {
+        const osg::Vec4 isotropic = renderOrthoFromPlusZ(scene(0.0, light).get(), 8, 8, 32.0).at(4, 4);
+        for (double g : {0.5, -0.5, 0.9}) {
+            const double k = 1.55 * g - 0.55 * g * g * g;
+            const osg::Vec4 p = renderOrthoFromPlusZ(scene(g, light).get(), 8, 8, 32.0).at(4, 4);
+            for (int c = 0; c < 3; ++c)
+                EXPECT_NEAR(p[c] / isotropic[c], (1 - k * k) / ((1 - k * cosTheta) * (1 - k * cosTheta)), 1e-4) << g;
+        }
+    }
+    // Against the model it declares (the reference's Henyey-Greenstein phase at the same g).
+    const double bound = ReferenceModelCatalog::instance().find("Illumination", "schlick")->bound;
+    const int size = 24;
+    const ReferenceCamera camera = perspectiveCamera(size, osg::Vec3d(20, -50, 35), osg::Vec3d(0, 0, 0), 40, 10, 200);
+    for (const auto& [g, light] : {std::pair{0.5, osg::Vec4(-1, 0, 0, 0)}, std::pair{-0.5, osg::Vec4(0.4f, -1, 0.7f, 0)},
+                                   std::pair{0.3, osg::Vec4(0.4f, -1, 0.7f, 0)}, std::pair{-0.3, osg::Vec4(-1, 0, 0, 0)},
+                                   std::pair{0.5, osg::Vec4(0.4f, -1, 0.7f, 0)}, std::pair{-0.5, osg::Vec4(-1, 0, 0, 0)}}) {
+        osg::ref_ptr<VolumeScene> s = scene(g, light);
+        const Pixels gpu = render(s.get(), size, size, camera.view, camera.projection);
+        const ReferenceSetup setup = referenceSetup(*s, camera, {});
+        const Difference d = differenceOf(gpu, renderReference(setup.scene, camera, setup.options), size);
+        EXPECT_LT(d.worst, bound) << "g " << g << ", rmse " << d.rmse;
+        EXPECT_GT(d.worst, 1e-3) << "g " << g << ": an approximation, not the model itself";
     }
 }
 
