@@ -120,7 +120,8 @@ int viewCommand(const std::vector<std::string>& args)
         for (VolumeNode* n : findVolumeNodes(*root)) n->settings.lodByDistance = true;
     // Bricked volumes stream in: frames never wait for the loaders, detail arrives over frames.
     if (!isSet("streambricks")) root->pass.streamBricks = true;
-    addAnnotations(*root, options, true);  // the scale bar and the axes, unless --no-scale-bar, --no-axes
+    // The scale bar and the axes, unless --no-scale-bar, --no-axes.
+    const osg::ref_ptr<Annotations> annotations = addAnnotations(*root, options, true);
     if (options.samples > 1) osg::DisplaySettings::instance()->setNumMultiSamples(options.samples);  // an MSAA window
     osgViewer::Viewer viewer;
     viewer.setThreadingModel(osgViewer::ViewerBase::SingleThreaded);
@@ -132,6 +133,7 @@ int viewCommand(const std::vector<std::string>& args)
     VolumeNode* node = nodes.empty() ? nullptr : nodes.front();
     const bool panels = node && node->getTransferFunction();
     const PanelColumn column = panels ? panelColumn(options.width, options.height) : PanelColumn{};
+    if (annotations) annotations->setLeftMargin(column.width);  // the axes right of the panels
     std::unique_ptr<TransferFunctionEditor> editor;
     std::unique_ptr<ChannelPanel> channels;  // a multi-channel volume: its channels, one editor each
     std::unique_ptr<RenderSettingsPanel> panel;

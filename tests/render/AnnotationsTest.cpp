@@ -109,6 +109,12 @@ TEST_F(AnnotationsRender, TheAxisGizmoTurnsWithTheView)
     EXPECT_TRUE(green(colourAt(x, o + 0.7 * l, o))) << "y to the right";
     EXPECT_TRUE(blue(colourAt(x, o, o + 0.7 * l))) << "z up";
     EXPECT_FALSE(red(colourAt(x, o + 0.7 * l, o)));
+    // Beside a panel column (volren view), the gizmo moves right of it.
+    annotations->setLeftMargin(40.0);
+    const Pixels moved = render(scene.get(), size, size, fromX, projection);
+    EXPECT_TRUE(green(colourAt(moved, 40.0 + o + 0.7 * l, o))) << "y to the right, 40 pixels on";
+    EXPECT_FALSE(green(colourAt(moved, o + 0.7 * l, o))) << "not where it was";
+    annotations->setLeftMargin(0.0);
     // Turned 45 degrees about z from the +x view: x and y both lean, at 0.707 of their length.
     const osg::Matrixd diagonal = osg::Matrixd::lookAt(osg::Vec3d(30, 30, 0), osg::Vec3d(), osg::Vec3d(0, 0, 1));
     const Pixels d = render(scene.get(), size, size, diagonal, projection);

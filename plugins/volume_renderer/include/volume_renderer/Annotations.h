@@ -35,6 +35,9 @@ public:
     const std::string& unit() const { return _unit; }  ///< the scale bar's unit
     /// Colour of the scale bar and the labels (white by default; dark for a light background).
     void setColour(const osg::Vec4& colour);
+    /// Pixels on the viewport's left that panels cover (volren view's panel column): the axis
+    /// gizmo stands right of them.
+    void setLeftMargin(double pixels) { _leftMargin = pixels; }
 
     /// The scale bar of the last culled frame (no bar before the first) and its label.
     ScaleBar shownScaleBar() const;
@@ -61,6 +64,7 @@ private:
                 const osg::Vec3d& centre);
 
     bool _scaleBar = false, _axes = false;
+    double _leftMargin = 0.0;
     std::string _unit;
     osg::ref_ptr<osg::Camera> _hud;
     std::shared_ptr<Parts> _parts;

@@ -310,7 +310,7 @@ void Annotations::update(const osg::Matrixd& view, const osg::Matrixd& projectio
         placeLabel(p.label, label, osg::Vec2d(0.5 * (left + right), barMargin + barThickness + 4.0), osg::Vec2d(0.5, 0.0));
     }
     if (_axes) {
-        const osg::Vec2d origin(gizmoOffset, gizmoOffset);
+        const osg::Vec2d origin(_leftMargin + gizmoOffset, gizmoOffset);
         for (int i = 0; i < 3; ++i) {
             osg::Vec3d axis;
             axis[i] = 1.0;
