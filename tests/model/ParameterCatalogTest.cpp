@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 namespace volren::test {
 namespace {
@@ -97,6 +98,11 @@ TEST(ParameterCatalog, ParseErrorsNameKeyValueRangeAndImplementation)
     ASSERT_TRUE(g.parse("2", v, error)) << error;
     EXPECT_EQ(v, ParameterValue(2.0));
     EXPECT_EQ(g.format(0.1), "0.1") << "the shortest text that reads back";
+    const ParameterDecl any = {.key = "testAny", .lo = std::numeric_limits<double>::lowest(),
+                               .hi = std::numeric_limits<double>::max(), .slot = "RayTraversal"};
+    EXPECT_EQ(any.range(), "any number");
+    EXPECT_FALSE(any.parse("x", v, error));
+    EXPECT_EQ(error, "testAny must be a number, got 'x' (read by RayTraversal (every implementation))");
 }
 
 TEST(RenderSettings, DeclaredParametersHaveTheirDefaultUntilSetAndReadBackAsSet)

@@ -2,6 +2,7 @@
 #include <volume_model/ParseNumber.h>
 
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace volren {
@@ -34,6 +35,11 @@ std::string ParameterDecl::owners() const
     return slot + (implementations.empty() ? " (every implementation)" : " " + joined(implementations));
 }
 
+bool ParameterDecl::unbounded() const
+{
+    return lo <= std::numeric_limits<double>::lowest() && hi >= std::numeric_limits<double>::max();
+}
+
 bool ParameterDecl::readBy(const std::string& slotName, const std::string& name) const
 {
     if (slotName != slot) return false;
@@ -56,6 +62,7 @@ std::string ParameterDecl::range() const
     std::ostringstream out;
     switch (type) {
     case ParameterType::Number:
+        if (unbounded()) return "any number";
         out << "in " << (openLow ? "(" : "[") << lo << ", " << hi << "]";
         break;
     case ParameterType::Integer:
@@ -108,7 +115,8 @@ bool ParameterDecl::parse(const std::string& text, ParameterValue& out, std::str
     case ParameterType::Number:
         if (text.empty() && !emptyMeans.empty()) return out = std::nan(""), true;
         if (!parseFiniteNumber(text, v) || !valid(v))
-            return error = key + " must be a number " + range() + ", got '" + text + "'" + who, false;
+            return error = key + " must be a number" + (unbounded() ? "" : " " + range()) + ", got '" + text + "'" + who,
+                   false;
         return out = v, true;
     case ParameterType::Integer:
         if (!parseFiniteNumber(text, v) || v != std::floor(v) || v < lo || v > hi)

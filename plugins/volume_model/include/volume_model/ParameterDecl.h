@@ -72,6 +72,8 @@ struct ParameterDecl
     std::string range() const;
     /// "Shadowing cone, cone_ao" / "Shading (every implementation)": who reads it.
     std::string owners() const;
+    /// Number: whether every finite number is valid (lo and hi the extremes of double).
+    bool unbounded() const;
     /// Whether implementation `name` of `slot` reads it.
     bool readBy(const std::string& slotName, const std::string& name) const;
     /// The same parameter as `o` (all but its implementations).
