@@ -41,12 +41,6 @@ bool isIdentifier(const std::string& s)
     return true;
 }
 
-std::string lower(std::string s)
-{
-    for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
-    return s;
-}
-
 /// Whether every parameter set in `a` has the same value in `b` (set, or by default there).
 bool sameParameters(const RenderSettings& a, const RenderSettings& b)
 {
@@ -93,7 +87,7 @@ template WeightCurve RenderSettings::parameter<WeightCurve>(const std::string&) 
 
 std::string RenderSettings::slotForKey(const std::string& key)
 {
-    const std::string k = lower(key);
+    const std::string k = lowerKey(key);
     for (const auto& [name, slot] : slotKeys())
         if (name == k) return slot;
     return {};
@@ -122,7 +116,7 @@ std::vector<std::pair<std::string, std::string>> RenderSettings::keys()
 
 std::string RenderSettings::get(const std::string& key) const
 {
-    const std::string k = lower(key);
+    const std::string k = lowerKey(key);
     if (const std::string slot = slotForKey(k); !slot.empty()) {
         if (forceNull.count(slot)) return "null (forced)";
         auto it = functions.find(slot);
@@ -152,9 +146,9 @@ std::string RenderSettings::get(const std::string& key) const
 
 bool RenderSettings::set(const std::string& key, const std::string& value, std::string& error)
 {
-    const std::string k = lower(key);
+    const std::string k = lowerKey(key);
     if (const std::string slot = slotForKey(k); !slot.empty()) {
-        const std::string name = canonicalFunction(lower(value));
+        const std::string name = canonicalFunction(lowerKey(value));
         if (!isIdentifier(name)) return error = key + " must name an implementation, got '" + value + "'", false;
         functions[slot] = name;
         return true;
@@ -219,14 +213,14 @@ bool RenderSettings::set(const std::string& key, const std::string& value, std::
         return true;
     }
     if (k == "textureprecision") {
-        const std::string p = lower(value);
+        const std::string p = lowerKey(value);
         if (p != "auto" && p != "native" && p != "16bit")
             return error = "texturePrecision must be auto, native or 16bit, got '" + value + "'", false;
         texturePrecision = p;
         return true;
     }
     if (k == "lodbydistance") {
-        const std::string b = lower(value);
+        const std::string b = lowerKey(value);
         if (b == "on" || b == "true" || b == "1") return lodByDistance = true, true;
         if (b == "off" || b == "false" || b == "0") return lodByDistance = false, true;
         return error = "lodByDistance must be on or off, got '" + value + "'", false;
