@@ -40,9 +40,6 @@ private:
     std::set<std::string> memberSharedNames(const std::string& numerics) const;
     /// Each member's sources, renamed apart (but for _memberShared).
     void appendMembers(const std::string& slotDeclarations);
-    /// For each function `volren_memberX` the member glue source defines, `volren_setMemberX`
-    /// with the member index first, calling that member's copy.
-    std::string memberDispatchers(const std::string& glue) const;
     void assembleBuild(const std::string& declarations, const std::string& numerics, const std::string& slotDeclarations);
 
     const ShaderFunctionRegistry& _registry;
