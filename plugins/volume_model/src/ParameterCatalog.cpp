@@ -31,8 +31,8 @@ void ParameterCatalog::declare(const ParameterDecl& decl)
         throw std::logic_error("parameter " + describe(decl) + ": its panel span is not within " + decl.range());
     if (decl.panel.kind == PanelHint::LogSlider && !(decl.panel.lo > 0.0))
         throw std::logic_error("parameter " + describe(decl) + ": a logarithmic slider needs a span above 0");
-    for (ParameterDecl& d : _decls) {
-        if (d.key != decl.key) continue;
+    if (auto it = _index.find(lowerKey(decl.key)); it != _index.end() && _decls[it->second].key == decl.key) {
+        ParameterDecl& d = _decls[it->second];  // declared again: the same parameter, another reader
         if (!d.sameAs(decl))
             throw std::logic_error("parameter key clash: " + describe(decl) + " is declared differently by " +
                                    describe(d) + " (keys are unique across the registry: choose another)");
@@ -44,26 +44,18 @@ void ParameterCatalog::declare(const ParameterDecl& decl)
     std::vector<std::string> names = decl.aliases;
     names.push_back(decl.key);
     for (const std::string& name : names)
-        for (const ParameterDecl& d : _decls) {
-            bool taken = lowerKey(d.key) == lowerKey(name);
-            for (const std::string& alias : d.aliases) taken = taken || lowerKey(alias) == lowerKey(name);
-            if (taken)
-                throw std::logic_error("parameter key clash: '" + name + "' of " + describe(decl) + " is taken by " +
-                                       describe(d) + " (keys are unique across the registry: choose another)");
-        }
+        if (auto it = _index.find(lowerKey(name)); it != _index.end())
+            throw std::logic_error("parameter key clash: '" + name + "' of " + describe(decl) + " is taken by " +
+                                   describe(_decls[it->second]) + " (keys are unique across the registry: choose another)");
+    for (const std::string& name : names) _index[lowerKey(name)] = _decls.size();
     _decls.push_back(decl);
 }
 
 const ParameterDecl* ParameterCatalog::find(const std::string& key) const
 {
     loadDeclarations();
-    const std::string k = lowerKey(key);
-    for (const ParameterDecl& d : _decls) {
-        if (lowerKey(d.key) == k) return &d;
-        for (const std::string& alias : d.aliases)
-            if (lowerKey(alias) == k) return &d;
-    }
-    return nullptr;
+    auto it = _index.find(lowerKey(key));
+    return it == _index.end() ? nullptr : &_decls[it->second];
 }
 
 const std::deque<ParameterDecl>& ParameterCatalog::all() const

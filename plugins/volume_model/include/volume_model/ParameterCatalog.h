@@ -2,6 +2,7 @@
 #include <volume_model/ParameterDecl.h>
 
 #include <deque>
+#include <map>
 #include <string>
 
 namespace volren {
@@ -28,6 +29,7 @@ public:
 
 private:
     std::deque<ParameterDecl> _decls;
+    std::map<std::string, std::size_t> _index;  ///< lower-case key or alias -> its declaration
 };
 
 }  // namespace volren
