@@ -32,8 +32,6 @@ extern "C" void volrenRegisterShaderFunctions(volren::ShaderFunctionRegistry& re
                              .clipsPerSample = true},
                   // Midpoint segments: exact in homogeneous media, within this of exact shadows
                   // in the test's block at 8 segments.
-                  .reference = ReferenceModel{.fidelity = ReferenceModel::Fidelity::Approximate,
-                                              .model = "exact shadows",
-                                              .bound = 4e-3},
+                  .reference = ReferenceModel::approximate("exact shadows", 4e-3),
                   .benchRows = {{}, {{"bandCount", "32"}}}});
 }

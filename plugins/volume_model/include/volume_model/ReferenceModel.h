@@ -24,6 +24,16 @@ struct ReferenceModel
     /// implementation's tests hold it to.
     double bound = 0.0;
     std::string why = {};  ///< None: why there is no model
+
+    /// Computed exactly (to float precision) by the reference as `model`.
+    static ReferenceModel exact(std::string model) { return {Fidelity::Exact, std::move(model)}; }
+    /// Approximates `model` within `bound`.
+    static ReferenceModel approximate(std::string model, double bound)
+    {
+        return {Fidelity::Approximate, std::move(model), bound};
+    }
+    /// Not modelled, for the reason `why`.
+    static ReferenceModel none(std::string why) { return {Fidelity::None, {}, 0.0, std::move(why)}; }
 };
 
 /// Every implementation's declared reference model, by slot and implementation name. The model

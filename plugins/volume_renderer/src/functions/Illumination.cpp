@@ -7,12 +7,6 @@ namespace volren {
 
 namespace {
 
-/// Computed by the reference as `model`, to float precision.
-ReferenceModel exactly(const std::string& model)
-{
-    return {.fidelity = ReferenceModel::Fidelity::Exact, .model = model};
-}
-
 const ParameterDecl specular = {.key = "specular", .defaultValue = 0.3, .lo = 0.0, .hi = 10.0,
                                 .help = "specular strength", .panel = {PanelHint::Slider, 0.0, 2.0}};
 
@@ -30,11 +24,14 @@ void bindAnisotropy(BindContext& c)
 
 void registerIlluminationFunctions(ShaderFunctionRegistry& registry)
 {
-    registry.add({.slot = "Illumination", .name = "null", .traits = {.calls = SlotList{}}, .reference = exactly("no light")});
+    registry.add({.slot = "Illumination",
+                  .name = "null",
+                  .traits = {.calls = SlotList{}},
+                  .reference = ReferenceModel::exact("no light")});
     registry.add({.slot = "Illumination",
                   .name = "lambert",
                   .traits = {.calls = SlotList{}},
-                  .reference = exactly("lambert diffuse"),
+                  .reference = ReferenceModel::exact("lambert diffuse"),
                   .benchRows = {{}}});
     registry.add({.slot = "Illumination",
                   .name = "blinn_phong",
@@ -48,7 +45,7 @@ void registerIlluminationFunctions(ShaderFunctionRegistry& registry)
                           c.uniform("volren_shininess", float(c.settings.number("shininess")));
                       },
                   .traits = {.calls = SlotList{}, .aliases = {"blinnphong", "blinn-phong", "phong"}},
-                  .reference = exactly("diffuse + blinn-phong highlight")});
+                  .reference = ReferenceModel::exact("diffuse + blinn-phong highlight")});
     registry.add({.slot = "Illumination",
                   .name = "cook_torrance",
                   .uniforms = {{"volren_specular", "float", ""}, {"volren_roughness", "float", ""}},
@@ -61,7 +58,7 @@ void registerIlluminationFunctions(ShaderFunctionRegistry& registry)
                           c.uniform("volren_roughness", float(c.settings.number("roughness")));
                       },
                   .traits = {.calls = SlotList{}, .aliases = {"cooktorrance", "cook-torrance"}},
-                  .reference = exactly("diffuse + cook-torrance ggx highlight"),
+                  .reference = ReferenceModel::exact("diffuse + cook-torrance ggx highlight"),
                   .benchRows = {{}}});
     // Volume scattering (no normal): the phase function between the light and the view.
     registry.add({.slot = "Illumination",
@@ -70,7 +67,7 @@ void registerIlluminationFunctions(ShaderFunctionRegistry& registry)
                   .parameters = {anisotropy},
                   .bind = bindAnisotropy,
                   .traits = {.calls = SlotList{}, .aliases = {"hg", "phase", "henyeygreenstein", "scattering"}},
-                  .reference = exactly("henyey-greenstein phase")});
+                  .reference = ReferenceModel::exact("henyey-greenstein phase")});
     // Schlick's approximation of it, without a power (Blasi, Le Saec and Schlick 1993): measured
     // against the reference's Henyey-Greenstein phase at the same g (ShadowingTest, |g| <= 0.5:
     // worst 0.067 of full scale, back-scattering at g = -0.5; 0.013 at |g| = 0.3).
@@ -80,9 +77,7 @@ void registerIlluminationFunctions(ShaderFunctionRegistry& registry)
                   .parameters = {anisotropy},
                   .bind = bindAnisotropy,
                   .traits = {.calls = SlotList{}, .aliases = {"schlick_phase"}},
-                  .reference = ReferenceModel{.fidelity = ReferenceModel::Fidelity::Approximate,
-                                              .model = "henyey-greenstein phase",
-                                              .bound = 0.08},
+                  .reference = ReferenceModel::approximate("henyey-greenstein phase", 0.08),
                   .benchRows = {{{"anisotropy", "0.5"}}}});
 }
 

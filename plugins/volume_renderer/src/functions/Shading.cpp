@@ -29,7 +29,7 @@ ShaderFunction lit(const std::string& name, const std::string& model, std::vecto
             .traits = {.calls = SlotList{"Gradient", "Illumination", "Shadowing"},
                        .required = {"Illumination"},
                        .lights = LightUse::Required},
-            .reference = ReferenceModel{.fidelity = ReferenceModel::Fidelity::Exact, .model = model}};
+            .reference = ReferenceModel::exact(model)};
 }
 
 /// What the debug shading shows, in the order of its GLSL switch (volren_debugView).
@@ -42,7 +42,7 @@ void registerShadingFunctions(ShaderFunctionRegistry& registry)
     registry.add({.slot = "Shading",
                   .name = "null",
                   .traits = {.calls = SlotList{}},
-                  .reference = ReferenceModel{.fidelity = ReferenceModel::Fidelity::Exact, .model = "unlit"}});
+                  .reference = ReferenceModel::exact("unlit")});
     // Every lit shading adds this fraction of the classified colour (bindings::bindLights).
     registry.addSlotParameter("Shading", {.key = "ambient", .defaultValue = 0.2, .lo = 0.0, .hi = 1.0,
                                           .help = "ambient light, as a fraction of the classified colour"});
@@ -85,7 +85,7 @@ void registerShadingFunctions(ShaderFunctionRegistry& registry)
                                     int(std::find(debugViews.begin(), debugViews.end(), view) - debugViews.begin()));
                       },
                   .traits = {.calls = SlotList{"Gradient", "Reconstruction"}, .lights = LightUse::Optional},
-                  .reference = ReferenceModel{.why = "its views show data (positions, gradients, normals), not light"}});
+                  .reference = ReferenceModel::none("its views show data (positions, gradients, normals), not light")});
 }
 
 }  // namespace volren

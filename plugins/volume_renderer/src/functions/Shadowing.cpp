@@ -118,7 +118,7 @@ void registerShadowingFunctions(ShaderFunctionRegistry& registry)
     registry.add({.slot = "Shadowing",
                   .name = "null",
                   .traits = {.calls = SlotList{}},
-                  .reference = ReferenceModel{.fidelity = ReferenceModel::Fidelity::Exact, .model = "unshadowed"}});
+                  .reference = ReferenceModel::exact("unshadowed")});
 
     // Shadow rays: a march towards each light per lit sample, with the view ray's sampling.
     registry.add({.slot = "Shadowing",
@@ -146,7 +146,7 @@ void registerShadowingFunctions(ShaderFunctionRegistry& registry)
                              .clipsPerSample = true,
                              .aliases = {"shadowray", "shadow_ray", "rays"}},
                   // The definition itself: the transmittance to each light, marched.
-                  .reference = ReferenceModel{.fidelity = ReferenceModel::Fidelity::Exact, .model = "exact shadows"}});
+                  .reference = ReferenceModel::exact("exact shadows")});
 
     // Propagated light volume: each light's transmittance in a half-float volume, built on the GPU
     // slice by slice (light_volume_build.comp) whenever the light, the TF, the volume or a clip
@@ -180,9 +180,7 @@ void registerShadowingFunctions(ShaderFunctionRegistry& registry)
                              .shadowsGeometry = true,
                              .aliases = {"lightvolume", "light-volume", "propagated"}},
                   // Trilinear in a half-resolution light volume (MultiVolumeShadows: within 4e-3).
-                  .reference = ReferenceModel{.fidelity = ReferenceModel::Fidelity::Approximate,
-                                              .model = "exact shadows",
-                                              .bound = 4e-3}});
+                  .reference = ReferenceModel::approximate("exact shadows", 4e-3)});
 
     // Cone tracing through the opacity mip chain: soft shadows (cone), and with directional
     // ambient occlusion (cone_ao). The chain is built on the GPU (cone_build.comp, then
@@ -236,10 +234,8 @@ void registerShadowingFunctions(ShaderFunctionRegistry& registry)
                                  .aliases = std::string(name) == "cone" ? std::vector<std::string>{"cones", "cone_shadows"}
                                                                         : std::vector<std::string>{"cones_ao", "cone+ao"}},
                       // Filtered opacity along a cone (MultiVolumeShadows: within 5e-3).
-                      .reference = ReferenceModel{.fidelity = ReferenceModel::Fidelity::Approximate,
-                                                  .model = std::string(name) == "cone" ? "exact shadows"
-                                                                                       : "exact shadows and occlusion",
-                                                  .bound = 5e-3}});
+                      .reference = ReferenceModel::approximate(
+                          std::string(name) == "cone" ? "exact shadows" : "exact shadows and occlusion", 5e-3)});
 }
 
 }  // namespace volren

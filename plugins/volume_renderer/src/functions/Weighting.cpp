@@ -13,7 +13,7 @@ void registerWeightingFunctions(ShaderFunctionRegistry& registry)
     registry.add({.slot = "Weighting",
                   .name = "null",
                   .traits = {.calls = SlotList{}},
-                  .reference = ReferenceModel{.fidelity = ReferenceModel::Fidelity::Exact, .model = "unweighted"}});
+                  .reference = ReferenceModel::exact("unweighted")});
 
     // The node's curves weightX, weightY, weightZ as hinges (Weighting/axes.glsl): up to
     // WeightCurve::maxKnots - 1 (15) segments per axis, four per vec4.
@@ -25,7 +25,7 @@ void registerWeightingFunctions(ShaderFunctionRegistry& registry)
                                      {"volren_weightSlope", "vec4", "12"},
                                      {"volren_weightBase", "vec3", ""}},
                         .traits = {.calls = SlotList{}},
-                        .reference = ReferenceModel{.fidelity = ReferenceModel::Fidelity::Exact, .model = "axis curves"},
+                        .reference = ReferenceModel::exact("axis curves"),
                         // The cost of the weights at every sample.
                         .benchRows = {{{"weightZ", "ramp:0.1"}}}};
     for (const char* axis : {"X", "Y", "Z"})
