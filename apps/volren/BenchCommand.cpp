@@ -67,9 +67,7 @@ std::vector<BenchConfig> defaultMatrix()
     add("texturePrecision", {"native", "16bit"});
     const ShaderFunctionRegistry& registry = ShaderFunctionRegistry::instance();
     for (const SlotInfo& slot : slots()) {
-        std::string key;  // the setting that chooses the slot's implementation
-        for (const auto& entry : RenderSettings::keys())
-            if (RenderSettings::slotForKey(entry.first) == slot.name) key = entry.first;
+        const std::string key = RenderSettings::keyForSlot(slot.name);  // the setting that chooses it
         for (const std::string& name : registry.names(slot.name))
             for (const auto& row : registry.find(slot.name, name)->benchRows) {
                 BenchConfig config{key + "=" + name, {{key, name}}, "native"};

@@ -109,7 +109,7 @@ bool ParameterDecl::valid(const ParameterValue& value) const
 
 bool ParameterDecl::parse(const std::string& text, ParameterValue& out, std::string& error) const
 {
-    const std::string who = " (read by " + owners() + ")";
+    const std::string who = slot.empty() ? "" : " (read by " + owners() + ")";
     double v = 0.0;
     switch (type) {
     case ParameterType::Number:

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
+#include <type_traits>
+#include <variant>
 
 namespace volren {
 
@@ -55,6 +57,63 @@ bool sameParameters(const RenderSettings& a, const RenderSettings& b)
     return true;
 }
 
+/// A setting every volume has: declared as implementations' parameters are (no slot: no one
+/// implementation reads it) and parsed by the same ParameterDecl, with the field it lives in.
+struct Field
+{
+    ParameterDecl decl;
+    std::variant<double RenderSettings::*, int RenderSettings::*, bool RenderSettings::*, std::string RenderSettings::*>
+        member;
+};
+
+const std::vector<Field>& fields()
+{
+    static const std::vector<Field> list = [] {
+        const RenderSettings d;  // the defaults are the struct's own
+        using T = ParameterType;
+        return std::vector<Field>{
+            {{.key = "sampleFactor", .defaultValue = d.sampleDistanceFactor, .lo = 0.0, .hi = 1e6, .openLow = true,
+              .help = "step as a factor of the smallest voxel spacing"},
+             &RenderSettings::sampleDistanceFactor},
+            {{.key = "sampleDistance", .defaultValue = d.sampleDistance, .lo = 0.0, .hi = 1e300,
+              .help = "step in world units (0 = use sampleFactor)"},
+             &RenderSettings::sampleDistance},
+            {{.key = "earlyTermination", .defaultValue = d.earlyTerminationThreshold, .lo = 0.0, .hi = 1.0,
+              .openLow = true, .help = "opacity at which front-to-back marching stops (1 = never; default 1 - 1/512)"},
+             &RenderSettings::earlyTerminationThreshold},
+            {{.key = "macrocellSize", .type = T::Integer, .defaultValue = d.macrocellSize, .lo = 1, .hi = 1024,
+              .unit = "voxels", .help = "edge of the empty-space-skipping macrocells"},
+             &RenderSettings::macrocellSize},
+            {{.key = "lod", .type = T::Integer, .defaultValue = d.lod, .lo = 0, .hi = 16, .unit = "mip levels",
+              .help = "level of detail: mip level the volume is sampled from, the step growing as 2^lod"},
+             &RenderSettings::lod},
+            {{.key = "lodByDistance", .type = T::Switch, .defaultValue = d.lodByDistance,
+              .help = "level of detail by distance: the level rises where a pixel covers more than a voxel"},
+             &RenderSettings::lodByDistance},
+            {{.key = "memoryBudgetMB", .type = T::Integer, .defaultValue = d.memoryBudgetMB, .lo = 0, .hi = 1 << 24,
+              .unit = "MiB",
+              .help = "GPU memory for one volume's voxels (0 = auto: half of what the GPU reports, else 2048); "
+                      "larger volumes are bricked"},
+             &RenderSettings::memoryBudgetMB},
+            {{.key = "brickSize", .type = T::Integer, .defaultValue = d.brickSize, .lo = 4, .hi = 512, .unit = "voxels",
+              .help = "edge of the bricks of a bricked volume (each stored with a one-voxel border)"},
+             &RenderSettings::brickSize},
+            {{.key = "texturePrecision", .type = T::Choice, .defaultValue = d.texturePrecision,
+              .choices = {"auto", "native", "16bit"},
+              .help = "volume texture precision: auto (16bit on drivers that filter 8-bit textures coarsely)"},
+             &RenderSettings::texturePrecision}};
+    }();
+    return list;
+}
+
+/// The setting every volume has under `key` (lower case), or null.
+const Field* fieldFor(const std::string& key)
+{
+    for (const Field& f : fields())
+        if (lowerKey(f.decl.key) == key) return &f;
+    return nullptr;
+}
+
 }  // namespace
 
 bool RenderSettings::operator==(const RenderSettings& o) const
@@ -93,19 +152,18 @@ std::string RenderSettings::slotForKey(const std::string& key)
     return {};
 }
 
+std::string RenderSettings::keyForSlot(const std::string& slot)
+{
+    for (const auto& [key, s] : slotKeys())
+        if (s == slot) return key;
+    return {};
+}
+
 std::vector<std::pair<std::string, std::string>> RenderSettings::keys()
 {
     std::vector<std::pair<std::string, std::string>> out = {
-        {"samplerate", "samples per smallest voxel spacing (= 1 / sampleFactor)"},
-        {"sampleFactor", "step as a factor of the smallest voxel spacing"},
-        {"sampleDistance", "step in world units (0 = use sampleFactor)"},
-        {"earlyTermination", "opacity at which front-to-back marching stops (1 = never; default 1 - 1/512)"},
-        {"macrocellSize", "edge of the empty-space-skipping macrocells in voxels (1-1024)"},
-        {"lod", "level of detail: mip level the volume is sampled from, the step growing as 2^lod (0-16)"},
-        {"lodByDistance", "level of detail by distance: the level rises where a pixel covers more than a voxel (on/off)"},
-        {"memoryBudgetMB", "GPU memory for one volume's voxels in MiB (0 = auto: half of what the GPU reports, else 2048); larger volumes are bricked"},
-        {"brickSize", "edge of the bricks of a bricked volume in voxels (4-512; each stored with a one-voxel border)"},
-        {"texturePrecision", "volume texture precision: auto (16bit on drivers that filter 8-bit textures coarsely), native, 16bit"}};
+        {"samplerate", "samples per smallest voxel spacing (= 1 / sampleFactor)"}};
+    for (const Field& f : fields()) out.push_back({f.decl.key, f.decl.help + " (" + f.decl.range() + ")"});
     for (const ParameterDecl& d : ParameterCatalog::instance().all())
         out.push_back({d.key, d.help + " (" + d.range() + (d.emptyMeans.empty() ? "" : "; empty = " + d.emptyMeans) +
                                   "; " + d.owners() + ")"});
@@ -123,15 +181,8 @@ std::string RenderSettings::get(const std::string& key) const
         return it == functions.end() ? std::string() : it->second;
     }
     if (k == "samplerate") return shortestText(1.0 / sampleDistanceFactor);
-    if (k == "samplefactor") return shortestText(sampleDistanceFactor);
-    if (k == "sampledistance") return shortestText(sampleDistance);
-    if (k == "earlytermination") return shortestText(earlyTerminationThreshold);
-    if (k == "macrocellsize") return std::to_string(macrocellSize);
-    if (k == "lod") return std::to_string(lod);
-    if (k == "memorybudgetmb") return std::to_string(memoryBudgetMB);
-    if (k == "bricksize") return std::to_string(brickSize);
-    if (k == "lodbydistance") return lodByDistance ? "on" : "off";
-    if (k == "textureprecision") return texturePrecision;
+    if (const Field* f = fieldFor(k))
+        return std::visit([&](auto member) { return f->decl.format(ParameterValue(this->*member)); }, f->member);
     if (k == "forcenull") {
         std::string list;
         for (const auto& s : forceNull) list += (list.empty() ? "" : ",") + s;
@@ -173,69 +224,18 @@ bool RenderSettings::set(const std::string& key, const std::string& value, std::
         parameters[d->key] = v;
         return true;
     }
-    struct Numeric
-    {
-        const char* key;
-        double* field;
-        double lo, hi;
-        bool openLow;
-    };
-    const Numeric numerics[] = {
-        {"samplefactor", &sampleDistanceFactor, 0.0, 1e6, true},
-        {"sampledistance", &sampleDistance, 0.0, 1e300, false},
-        {"earlytermination", &earlyTerminationThreshold, 0.0, 1.0, true},
-    };
-    double v = 0.0;
     if (k == "samplerate") {
+        double v = 0.0;
         if (!parseFiniteNumber(value, v) || !(v > 0.0) || v < 1e-6)
             return error = "samplerate must be a number of samples per voxel > 0, got '" + value + "'", false;
         sampleDistanceFactor = 1.0 / v;
         return true;
     }
-    struct Whole
-    {
-        const char* key;
-        int* field;
-        int lo, hi;
-        const char* unit;
-    };
-    const Whole wholes[] = {{"macrocellsize", &macrocellSize, 1, 1024, "voxels"},
-                            {"lod", &lod, 0, 16, "mip levels"},
-                            {"memorybudgetmb", &memoryBudgetMB, 0, 1 << 24, "MiB"},
-                            {"bricksize", &brickSize, 4, 512, "voxels"}};
-    for (const Whole& w : wholes) {
-        if (k != w.key) continue;
-        if (!parseFiniteNumber(value, v) || v != std::floor(v) || v < w.lo || v > w.hi)
-            return error = key + " must be a whole number of " + w.unit + " in [" + std::to_string(w.lo) + ", " +
-                           std::to_string(w.hi) + "], got '" + value + "'",
-                   false;
-        *w.field = int(v);
-        return true;
-    }
-    if (k == "textureprecision") {
-        const std::string p = lowerKey(value);
-        if (p != "auto" && p != "native" && p != "16bit")
-            return error = "texturePrecision must be auto, native or 16bit, got '" + value + "'", false;
-        texturePrecision = p;
-        return true;
-    }
-    if (k == "lodbydistance") {
-        const std::string b = lowerKey(value);
-        if (b == "on" || b == "true" || b == "1") return lodByDistance = true, true;
-        if (b == "off" || b == "false" || b == "0") return lodByDistance = false, true;
-        return error = "lodByDistance must be on or off, got '" + value + "'", false;
-    }
-    for (const Numeric& n : numerics) {
-        if (k != n.key) continue;
-        const bool ok = parseFiniteNumber(value, v) && (n.openLow ? v > n.lo : v >= n.lo) && v <= n.hi;
-        if (!ok) {
-            std::ostringstream why;
-            why << key << " must be a number in " << (n.openLow ? "(" : "[") << n.lo << ", " << n.hi << "], got '"
-                << value << "'";
-            error = why.str();
-            return false;
-        }
-        *n.field = v;
+    if (const Field* f = fieldFor(k)) {
+        ParameterValue v;
+        if (!f->decl.parse(value, v, error)) return false;
+        std::visit([&](auto member) { this->*member = std::get<std::remove_reference_t<decltype(this->*member)>>(v); },
+                   f->member);
         return true;
     }
     std::string known;

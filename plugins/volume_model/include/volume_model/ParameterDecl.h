@@ -57,7 +57,7 @@ struct ParameterDecl
     std::string label = {};  ///< the panel's label; empty: the key
     PanelHint panel = {};
     std::vector<std::string> aliases = {};  ///< other keys accepted (old names)
-    std::string slot = {};                  ///< the slot of the implementations that read it
+    std::string slot = {};                  ///< the slot of the implementations that read it (empty: a setting every volume has)
     /// The implementations of `slot` that read it; empty: every implementation of the slot.
     std::vector<std::string> implementations = {};
 

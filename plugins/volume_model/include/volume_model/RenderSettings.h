@@ -74,6 +74,8 @@ struct RenderSettings
     double number(const std::string& key) const { return parameter<double>(key); }
     /// Slot chosen by a key ("traversal" -> "RayTraversal"), or "" when the key is not a slot key.
     static std::string slotForKey(const std::string& key);
+    /// The key that chooses `slot`'s implementation ("RayTraversal" -> "traversal"), or "".
+    static std::string keyForSlot(const std::string& slot);
 };
 
 extern template double RenderSettings::parameter<double>(const std::string&) const;

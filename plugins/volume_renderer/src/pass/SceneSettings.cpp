@@ -171,10 +171,7 @@ std::string settingsHelp(const CompositionPolicy& policy)
         out << "  " << std::left << std::setw(18) << key << std::setw(14) << pass.get(key) << what << "\n";
     out << "Implementations per slot (default first):\n";
     for (const SlotInfo& s : slots()) {
-        std::string key;
-        for (const auto& entry : RenderSettings::keys())
-            if (RenderSettings::slotForKey(entry.first) == s.name) key = entry.first;
-        out << "  " << std::left << std::setw(16) << s.name << "(" << key << "): ";
+        out << "  " << std::left << std::setw(16) << s.name << "(" << RenderSettings::keyForSlot(s.name) << "): ";
         const std::vector<std::string> names = policy.choosable(s.name);
         for (std::size_t i = 0; i < names.size(); ++i) out << (i ? ", " : "") << names[i];
         if (!s.isTemplate && CompositionPolicy::neededImplementation(s.name) != CompositionPolicy::defaultImplementation(s.name))
