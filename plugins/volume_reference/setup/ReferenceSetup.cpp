@@ -71,9 +71,10 @@ ReferenceScene referenceScene(VolumeScene& scene)
                 placed.shadows = shadows ? ReferenceScene::Shadows::Exact : ReferenceScene::Shadows::None;
                 placed.occlusion = shadows && model->model == ReferenceScene::exactShadowsAndOcclusion;
             }
-            if (const ShaderFunction* f = scene.policy().registry().find("Shadowing", it->second))
-                placed.shadowsGeometry = f->traits.shadowsGeometry;
         }
+        for (const auto& [slot, name] : placed.choice)  // an implementation that needs a kind of data that darkens it
+            if (const ShaderFunction* f = scene.policy().registry().find(slot, name))
+                placed.shadowsGeometry = placed.shadowsGeometry || scene.policy().registry().darkensGeometry(*f);
     }
     return content;
 }

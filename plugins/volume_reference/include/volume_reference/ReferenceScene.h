@@ -58,7 +58,7 @@ struct ReferenceScene
         /// Volumes: they shadow the opaque geometry: each geometry pixel's colour is scaled by
         /// the mean over the lights of the transmittance from its surface point to each light
         /// through this volume (several such volumes: the product of theirs). referenceSetup()
-        /// sets it from the traits of the renderer's Shadowing choice (shadowsGeometry).
+        /// sets it where an implementation chosen needs data that darkens the geometry (AuxKind).
         bool shadowsGeometry = false;
         /// Volumes: how it combines with the volumes its box overlaps (transitively: a group, as
         /// the renderer's ray groups); a group takes its first volume's. Groups that do not

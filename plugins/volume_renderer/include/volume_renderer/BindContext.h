@@ -21,49 +21,6 @@ class VolumeNode;
 class TransferFunction;
 struct RenderSettings;
 
-/// Auxiliary data an implementation needs; the renderer creates only what a composition asks for.
-/// The screen-sized ones are per camera and bound by the pass itself (VolumeScene):
-/// - DepthTexture: the depth of the opaque geometry drawn before the volumes, as sampler2D
-///   `volren_depthTexture` read with texelFetch at gl_FragCoord.xy - `volren_viewportOrigin`;
-/// - EntryPoints: the volume-space points of the box's rasterised front faces, as image2D
-///   `volren_entryPoints` (rgba32f: xyz, w = `volren_frameStamp` of the frame that wrote it).
-/// - OccupancyGrid: per macrocell of the volume, whether any sample in it may be visible under
-///   the current transfer function (MacrocellGrid.h), as an R8 3D texture read with texelFetch;
-/// - MacrocellRanges: per macrocell the smallest and largest texel value its samples can read,
-///   as an RG16F 3D texture (bounds rounded outwards) read with texelFetch (MacrocellGrid.h);
-/// - HomogeneityGrid: the OccupancyGrid with visible cells told apart: 255 where the
-///   classification varies by at most the node's adaptiveTolerance over the cell's values
-///   (Classification's `variation` mirror), else 128 (adaptive sampling).
-/// - BrickPool: the volume's mip levels in bricks in a pool texture with their page table
-///   (BrickPool.h; VolumeStorage bricked), within the node's memory budget.
-/// - LightVolume: per node, each light's transmittance (one half-float channel per light, up to
-///   four) over the volume's box at lightVolumeScale of its resolution, built on the GPU by the
-///   implementation's build program (ShaderFunction::buildFile) when what it depends on changes.
-/// - OpacityMipChain: per node, the classified extinction (per world unit) at every voxel of the
-///   sampled level, as a half-float 3D texture with a full mip chain (box-filtered on the GPU,
-///   zero outside the box), built by the implementation's build program when the TF, the volume
-///   or a clip shape changes (cone tracing).
-/// - GeometryShadowMap: per scene, the depth of its opaque geometry seen from each light (up to
-///   four; a 2D array texture compared LEQUAL, one layer per light) over the boxes of the
-///   volumes that read it, drawn before the frame by the pass; with
-///   BindContext::geometryShadowMatrices (shadowing methods: polygons shadow volumes).
-enum class AuxData
-{
-    VolumeTexture,
-    TransferFunctionTable,
-    PremultipliedTable,
-    JitterTexture,
-    DepthTexture,
-    EntryPoints,
-    OccupancyGrid,
-    MacrocellRanges,
-    HomogeneityGrid,
-    BrickPool,
-    LightVolume,
-    OpacityMipChain,
-    GeometryShadowMap
-};
-
 struct BrickedVolume;
 
 /// A light as the volume sees it, in the VolumeNode's local coordinates.
@@ -93,7 +50,8 @@ struct BindContext
     bool coarseByteFiltering = false;    ///< the driver filters 8-bit textures to 8-bit results
     osg::StateSet& stateSet;             ///< per-node state of the volume's proxy geometry
     const std::map<std::string, int>& textureUnits;  ///< sampler name -> unit, from the compositor
-    std::map<AuxData, osg::ref_ptr<osg::Texture>> aux = {};  ///< auxiliary textures made for this node
+    /// Auxiliary data made for this node, by kind name (AuxKind; ShaderFunction::needs).
+    std::map<std::string, osg::ref_ptr<osg::Texture>> aux = {};
     std::vector<LightInfo> lights = {};  ///< lights reaching the volume
     std::vector<ClipInfo> clips = {};    ///< per template instance of the slot being bound
     std::string suffix = {};             ///< "_k" while binding template instance k, else ""
@@ -102,7 +60,7 @@ struct BindContext
     bool writesDepth = false;            ///< the composition's traversal reports surface hits
     /// Texture of a volume (shared per Volume); `nearest` selects nearest-voxel filtering.
     std::function<osg::Texture*(const Volume&, bool nearest)> volumeTexture = {};
-    const BrickedVolume* bricks = nullptr;  ///< the volume's bricks when a composition asks for BrickPool
+    const BrickedVolume* bricks = nullptr;  ///< the volume's bricks when a composition needs the brick pool
     /// Volume texture space -> clip space of the camera culling it (bricks outside are not loaded).
     std::optional<osg::Matrixd> textureToClip = {};
     /// Size of the box the proxy draws; zero means the volume's own box (a multi-volume set's
@@ -114,7 +72,7 @@ struct BindContext
     osg::Matrixd setToMember = {};
     /// GPU builds of auxiliary data to draw before the ray caster, under its state.
     std::vector<osg::ref_ptr<osg::Node>> prepasses = {};
-    /// Volume texture space -> each light's GeometryShadowMap coordinates ([0,1]^2 and depth; a
+    /// Volume texture space -> each light's geometry shadow map coordinates ([0,1]^2 and depth; a
     /// zero matrix where no map covers that light). Empty: no opaque geometry shadows the volume.
     std::vector<osg::Matrixd> geometryShadowMatrices = {};
 

@@ -12,7 +12,7 @@
 namespace volren {
 
 /// The screen-sized, per-camera parts of the VolumeScene pass, made only for compositions that
-/// ask for them (AuxData::DepthTexture, AuxData::EntryPoints) and sized to each camera's viewport:
+/// ask for them (the auxiliary data kinds "depth texture" and "entry points") and sized to each camera's viewport:
 /// - the depth capture: after the opaque geometry (render bin 5) the depth buffer is copied
 ///   into a depth texture that ClipRay/depth reads;
 /// - entry points: before the volumes (render bin 8) each rasterised volume's front faces store

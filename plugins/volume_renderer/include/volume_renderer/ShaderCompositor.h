@@ -44,8 +44,8 @@ struct ComposedProgram
     /// The compute programs of the implementations with a `buildFile`, by member (-1: a single
     /// volume's own; k: member k of a set); each shares the ray caster's uniform and sampler names.
     std::map<int, BuildProgram> builds;
-    /// Whether an implementation of this program needs `aux`.
-    bool needs(AuxData aux) const;
+    /// Whether an implementation of this program needs auxiliary data of kind `kind`.
+    bool needs(const std::string& kind) const;
     /// The build program of `member` (-1: a single volume), or null when it has none.
     const BuildProgram* build(int member) const;
 };

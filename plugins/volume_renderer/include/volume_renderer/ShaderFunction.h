@@ -23,6 +23,9 @@ struct UniformDecl
     /// Read by the ray caster only, never by the implementation's compute build (buildFile), so
     /// a change of it does not rebuild the auxiliary volume (the opaque geometry's shadow maps).
     bool rayCasterOnly = false;
+    /// Set from the scene's lights: a change of it rebuilds only auxiliary volumes whose build
+    /// reads the lights (AuxBuild::readsLights).
+    bool perLight = false;
 };
 
 /// A texture an implementation samples; the compositor gives each distinct name a unit.
@@ -106,10 +109,6 @@ struct ImplementationTraits
     /// Shadowing: it samples the volume away from the view ray, so every clip shape must be
     /// known per sample (the policy puts clip planes in ClipPosition instead of ClipRay).
     bool clipsPerSample = false;
-    /// Shadowing: the volume also shadows the opaque geometry: the pass scales the polygons'
-    /// colour by the transmittance to the lights that its light volume (AuxData::LightVolume,
-    /// one channel per light) holds where the way to each light leaves the box.
-    bool shadowsGeometry = false;
     /// Other names users may give it in settings ("dvr" for dvr_front_to_back).
     std::vector<std::string> aliases = {};
 };
@@ -153,7 +152,7 @@ struct ShaderFunction
     std::vector<std::string> includes = {};  ///< helper files emitted (once) before `file`
     std::vector<UniformDecl> uniforms = {};  ///< uniforms it reads
     std::vector<TextureDecl> textures = {};  ///< samplers it reads
-    std::vector<AuxData> needs = {};         ///< auxiliary data the renderer must create
+    std::vector<std::string> needs = {};     ///< auxiliary data the pass must make (AuxKind names)
     /// Its parameters (slot and implementation are filled in at registration): what `--set`,
     /// scene files, the panel and its bind read. Keys are unique across the registry.
     std::vector<ParameterDecl> parameters = {};
@@ -192,7 +191,7 @@ struct ShaderFunction
         return std::find(traits.required.begin(), traits.required.end(), slot) != traits.required.end();
     }
     /// Whether it needs auxiliary data `aux`.
-    bool needsAux(AuxData aux) const { return std::find(needs.begin(), needs.end(), aux) != needs.end(); }
+    bool needsAux(const std::string& kind) const { return std::find(needs.begin(), needs.end(), kind) != needs.end(); }
 };
 
 }  // namespace volren

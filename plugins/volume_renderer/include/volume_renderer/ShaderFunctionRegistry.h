@@ -1,4 +1,5 @@
 #pragma once
+#include <volume_renderer/AuxKind.h>
 #include <volume_renderer/ShaderFunction.h>
 
 #include <map>
@@ -35,6 +36,18 @@ public:
     void addSlotParameter(const std::string& slot, ParameterDecl parameter);
     /// The implementation `name` of `slot`, or null.
     const ShaderFunction* find(const std::string& slot, const std::string& name) const;
+    /// Declares a kind of auxiliary data; throws std::logic_error when its name is taken or it
+    /// says neither how it is made nor where (a Volume kind with no provide and no build).
+    void addAuxKind(AuxKind kind);
+    /// The kind of auxiliary data `name`, or null.
+    const AuxKind* auxKind(const std::string& name) const;
+    /// The kinds `function` needs; throws std::runtime_error naming the implementation and the
+    /// kind when one is not declared.
+    std::vector<const AuxKind*> auxKindsOf(const ShaderFunction& function) const;
+    /// Whether a kind `function` needs darkens the opaque geometry (AuxKind::darkensGeometry).
+    bool darkensGeometry(const ShaderFunction& function) const;
+    /// Messages for the kinds implementations need that no one declared.
+    std::vector<std::string> undeclaredNeeds() const;
     /// Names of the implementations of `slot` that single-volume compositions may choose (the
     /// multi-volume set functions are left out).
     std::vector<std::string> names(const std::string& slot) const;
@@ -52,6 +65,7 @@ public:
 
 private:
     std::map<std::string, std::map<std::string, ShaderFunction>> _functions;
+    std::map<std::string, AuxKind> _auxKinds;
 };
 
 /// Registers the built-in implementations (one function and file per slot, src/functions/<Slot>.cpp).

@@ -31,10 +31,10 @@ void checkComposition(const Composition& composition)
 
 }  // namespace
 
-bool ComposedProgram::needs(AuxData aux) const
+bool ComposedProgram::needs(const std::string& kind) const
 {
     for (const Binding& b : bindings)
-        if (b.function->needsAux(aux)) return true;
+        if (b.function->needsAux(kind)) return true;
     return false;
 }
 

@@ -34,6 +34,7 @@ ShaderFunctionRegistry& ShaderFunctionRegistry::instance()
         r->addBuiltins();
         for (const std::string& failure : r->loadPlugins()) OSG_WARN << "volren: " << failure << std::endl;
         r->addShaderDirectoryFunctions();
+        for (const std::string& missing : r->undeclaredNeeds()) OSG_WARN << "volren: " << missing << std::endl;
         return r;
     }();
     return *registry;
@@ -144,6 +145,57 @@ void ShaderFunctionRegistry::addSlotParameter(const std::string& slot, Parameter
     parameter.slot = slot;
     parameter.implementations.clear();
     ParameterCatalog::instance().declare(parameter);
+}
+
+void ShaderFunctionRegistry::addAuxKind(AuxKind kind)
+{
+    if (_auxKinds.count(kind.name)) throw std::logic_error("auxiliary data kind '" + kind.name + "' is declared twice");
+    const bool made = kind.scope == AuxScope::Volume ? bool(kind.provide) != kind.build.has_value()
+                                                     : kind.scope != AuxScope::Camera || bool(kind.perCamera);
+    if (!made)
+        throw std::logic_error("auxiliary data kind '" + kind.name +
+                               "' must say how it is made (a Volume kind: provide or build, one of them; a Camera kind: perCamera)");
+    if (kind.build && (!kind.build->dims || !kind.build->channels || !kind.build->plan || kind.build->sampler.empty()))
+        throw std::logic_error("auxiliary data kind '" + kind.name + "': its build needs a sampler, dims, channels and a plan");
+    const std::string name = kind.name;
+    _auxKinds.emplace(name, std::move(kind));
+}
+
+const AuxKind* ShaderFunctionRegistry::auxKind(const std::string& name) const
+{
+    auto it = _auxKinds.find(name);
+    return it == _auxKinds.end() ? nullptr : &it->second;
+}
+
+std::vector<const AuxKind*> ShaderFunctionRegistry::auxKindsOf(const ShaderFunction& function) const
+{
+    std::vector<const AuxKind*> kinds;
+    for (const std::string& name : function.needs) {
+        const AuxKind* kind = auxKind(name);
+        if (!kind)
+            throw std::runtime_error(function.slot + " " + function.name + " needs auxiliary data '" + name +
+                                     "', a kind no one declared (ShaderFunctionRegistry::addAuxKind)");
+        kinds.push_back(kind);
+    }
+    return kinds;
+}
+
+bool ShaderFunctionRegistry::darkensGeometry(const ShaderFunction& function) const
+{
+    for (const std::string& name : function.needs)
+        if (const AuxKind* kind = auxKind(name); kind && kind->darkensGeometry) return true;
+    return false;
+}
+
+std::vector<std::string> ShaderFunctionRegistry::undeclaredNeeds() const
+{
+    std::vector<std::string> out;
+    for (const auto& [slot, functions] : _functions)
+        for (const auto& [name, f] : functions)
+            for (const std::string& kind : f.needs)
+                if (!auxKind(kind))
+                    out.push_back(slot + " " + name + " needs auxiliary data '" + kind + "', a kind no one declared");
+    return out;
 }
 
 const ShaderFunction* ShaderFunctionRegistry::find(const std::string& slot, const std::string& name) const

@@ -1,6 +1,8 @@
 // Classification implementations.
 #include "CommonBindings.h"
 
+#include "../resources/TextureCache.h"
+
 #include <volume_renderer/ShaderFunctionRegistry.h>
 
 #include <volume_model/RenderSettings.h>
@@ -137,15 +139,24 @@ void registerClassificationFunctions(ShaderFunctionRegistry& registry)
                       };
                   }});
 
+    // The transfer function as an RGBA 1D table over the window (TextureCache::table), plain or
+    // with colour premultiplied by opacity; one per TF, remade when it changes.
+    registry.addAuxKind({.name = "transfer function table", .provide = [](AuxRequest& r) -> osg::Texture* {
+                             return r.textures.table(r.context.transfer, false, r.cull);
+                         }});
+    registry.addAuxKind({.name = "premultiplied table", .provide = [](AuxRequest& r) -> osg::Texture* {
+                             return r.textures.table(r.context.transfer, true, r.cull);
+                         }});
+
     registry.add({.slot = "Classification",
                   .name = "tf1d",
                   .uniforms = bindings::window,
                   .textures = {{"volren_transferFunction", "sampler1D"}},
-                  .needs = {AuxData::TransferFunctionTable},
+                  .needs = {"transfer function table"},
                   .bind =
                       [](BindContext& c) {
                           bindings::bindWindow(c);
-                          c.texture("volren_transferFunction", c.aux.at(AuxData::TransferFunctionTable).get());
+                          c.texture("volren_transferFunction", c.aux.at("transfer function table").get());
                       },
                   .traits = leaf,
                   .mayShow = tableMirror,
@@ -155,11 +166,11 @@ void registerClassificationFunctions(ShaderFunctionRegistry& registry)
                   .name = "premultiplied",
                   .uniforms = bindings::window,
                   .textures = {{"volren_premultipliedTable", "sampler1D"}},
-                  .needs = {AuxData::PremultipliedTable},
+                  .needs = {"premultiplied table"},
                   .bind =
                       [](BindContext& c) {
                           bindings::bindWindow(c);
-                          c.texture("volren_premultipliedTable", c.aux.at(AuxData::PremultipliedTable).get());
+                          c.texture("volren_premultipliedTable", c.aux.at("premultiplied table").get());
                       },
                   .traits = leaf,
                   .benchRows = {{}},
@@ -170,14 +181,14 @@ void registerClassificationFunctions(ShaderFunctionRegistry& registry)
                   .name = "threshold",
                   .uniforms = bindings::window + std::vector<UniformDecl>{{"volren_threshold", "float", ""}},
                   .textures = {{"volren_transferFunction", "sampler1D"}},
-                  .needs = {AuxData::TransferFunctionTable},
+                  .needs = {"transfer function table"},
                   .parameters = {{.key = "threshold", .defaultValue = 0.5, .lo = 0.0, .hi = 1.0,
                                   .help = "level of the threshold classification, as a fraction of the value window"}},
                   .bind =
                       [](BindContext& c) {
                           bindings::bindWindow(c);
                           c.uniform("volren_threshold", float(c.settings.number("threshold")));
-                          c.texture("volren_transferFunction", c.aux.at(AuxData::TransferFunctionTable).get());
+                          c.texture("volren_transferFunction", c.aux.at("transfer function table").get());
                       },
                   .traits = leaf,
                   .mayShow = [](const BindContext& c) -> std::function<bool(double, double)> {

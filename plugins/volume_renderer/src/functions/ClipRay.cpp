@@ -2,6 +2,8 @@
 // of the opaque geometry when the scene has some).
 #include "CommonBindings.h"
 
+#include <volume_renderer/ScreenPasses.h>
+#include <volume_renderer/ShaderCompositor.h>
 #include <volume_renderer/ShaderFunctionRegistry.h>
 
 #include <volume_model/ClipPlaneNode.h>
@@ -27,15 +29,22 @@ void registerClipRayFunctions(ShaderFunctionRegistry& registry)
                       },
                   .traits = {.calls = SlotList{}, .clipKind = "plane"}});
 
-    // The depth texture and its viewport origin are per camera: the VolumeScene binds them
-    // (AuxData::DepthTexture); the instance itself only needs the box geometry (one per program,
-    // like OSG's matrix: declared shared, never renamed).
+    // The depth of the opaque geometry drawn before the volumes, per camera (ScreenPasses): as
+    // sampler2D volren_depthTexture read with texelFetch at gl_FragCoord.xy - volren_viewportOrigin,
+    // which the screen pass sets too.
+    registry.addAuxKind({.name = "depth texture",
+                         .scope = AuxScope::Camera,
+                         .perCamera = [](AuxCameraRequest& r) {
+                             return r.screen.depthState(r.cv, r.program.textureUnits.at("volren_depthTexture"));
+                         }});
+    // The instance itself only needs the box geometry (one per program, like OSG's matrix:
+    // declared shared, never renamed).
     ShaderFunction depth{.slot = "ClipRay",
                          .name = "depth",
                          .uniforms = {{"osg_ModelViewProjectionMatrix", "mat4", "", true},
                                       {"volren_viewportOrigin", "vec2", "", true}},
                          .textures = {{"volren_depthTexture", "sampler2D", true}},
-                         .needs = {AuxData::DepthTexture},
+                         .needs = {"depth texture"},
                          .bind = [](BindContext& c) { c.unsuffixed(bindings::bindGeometry); },
                          .traits = {.calls = SlotList{}, .clipKind = "depth", .single = true}};
     for (UniformDecl u : bindings::geometry) {

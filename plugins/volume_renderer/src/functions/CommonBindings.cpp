@@ -3,6 +3,9 @@
 #include <volume_renderer/BrickPool.h>
 #include <volume_renderer/VolumeMipChain.h>
 
+#include <volume_model/ParameterCatalog.h>
+#include <volume_model/RenderSettings.h>
+#include <volume_model/SpatialWeighting.h>
 #include <volume_model/TransferFunction.h>
 #include <volume_model/Volume.h>
 #include <volume_model/VolumeNode.h>
@@ -46,12 +49,13 @@ const TextureDecl volumeTexture = {"volren_volume", "sampler3D"};
 
 void bindVolumeTexture(BindContext& c)
 {
-    c.texture("volren_volume", c.aux.at(AuxData::VolumeTexture).get());
+    c.texture("volren_volume", c.aux.at("volume texture").get());
 }
 
-const std::vector<UniformDecl> lights = {{"volren_lightPosition", "vec4", "VOLREN_LIGHT_ARRAY"},
-                                         {"volren_lightColour", "vec3", "VOLREN_LIGHT_ARRAY"},
-                                         {"volren_ambient", "float", ""}};
+const std::vector<UniformDecl> lights = {
+    {.name = "volren_lightPosition", .glslType = "vec4", .arraySize = "VOLREN_LIGHT_ARRAY", .perLight = true},
+    {.name = "volren_lightColour", .glslType = "vec3", .arraySize = "VOLREN_LIGHT_ARRAY", .perLight = true},
+    {"volren_ambient", "float", ""}};
 
 void bindLights(BindContext& c)
 {
@@ -81,6 +85,26 @@ std::vector<UniformDecl> operator+(std::vector<UniformDecl> a, const std::vector
 {
     a.insert(a.end(), b.begin(), b.end());
     return a;
+}
+
+void appendParameterValues(std::string& key, const RenderSettings& settings, const ShaderFunction& function)
+{
+    for (const ParameterDecl& p : ParameterCatalog::instance().all()) {
+        if (!p.readBy(function.slot, function.name)) continue;
+        switch (p.type) {
+        case ParameterType::Number: appendBytes(key, settings.number(p.key)); break;
+        case ParameterType::Integer: appendBytes(key, settings.parameter<int>(p.key)); break;
+        case ParameterType::Switch: appendBytes(key, settings.parameter<bool>(p.key)); break;
+        case ParameterType::Choice: key += settings.parameter<std::string>(p.key) + '\0'; break;
+        case ParameterType::Curve:
+            appendBytes(key, settings.parameter<WeightCurve>(p.key).knots.size());
+            for (const auto& [u, w] : settings.parameter<WeightCurve>(p.key).knots) {
+                appendBytes(key, u);
+                appendBytes(key, w);
+            }
+            break;
+        }
+    }
 }
 
 }  // namespace volren::bindings

@@ -3,6 +3,8 @@
 // declares a name once) and set by these helpers, so their values have one definition.
 #include <volume_renderer/ShaderFunction.h>
 
+#include <string>
+
 namespace volren::bindings {
 
 /// volren_worldSize (vec3) and volren_dims (vec3).
@@ -31,6 +33,17 @@ std::pair<double, double> windowOf(const BindContext& c);
 
 /// volren_window's value: texel value v -> window u = v * first + second (before clamping).
 std::pair<double, double> windowMap(const BindContext& c);
+
+/// Appends the bytes of `value` to `key` (a cache key of values compared, never formatted).
+template <typename T>
+void appendBytes(std::string& key, const T& value)
+{
+    key.append(reinterpret_cast<const char*>(&value), sizeof(value));
+}
+
+/// Appends to `key` the values in `settings` of every parameter `function` reads (so a cache
+/// key holds what a mirror made from that implementation depends on).
+void appendParameterValues(std::string& key, const RenderSettings& settings, const ShaderFunction& function);
 
 /// Concatenation helper for uniform lists.
 std::vector<UniformDecl> operator+(std::vector<UniformDecl> a, const std::vector<UniformDecl>& b);

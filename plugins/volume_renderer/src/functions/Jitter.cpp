@@ -42,7 +42,6 @@ void registerJitterFunctions(ShaderFunctionRegistry& registry)
     registry.add({.slot = "Jitter",
                   .name = "texture",
                   .textures = {{"volren_jitterTexture", "sampler2D"}},
-                  .needs = {AuxData::JitterTexture},
                   .bind = [](BindContext& c) { c.texture("volren_jitterTexture", jitterTile()); },
                   .traits = leaf,
                   .benchRows = {{}}});

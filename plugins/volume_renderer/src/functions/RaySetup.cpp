@@ -1,6 +1,7 @@
 // RaySetup implementations: they own main() and the proxy geometry's vertex stage.
 #include "CommonBindings.h"
 
+#include <volume_renderer/ScreenPasses.h>
 #include <volume_renderer/ShaderFunctionRegistry.h>
 
 namespace volren {
@@ -30,12 +31,19 @@ void registerRaySetupFunctions(ShaderFunctionRegistry& registry)
     registry.add(raySetup("box_intersection"));
     registry.add(raySetup("hybrid"));
 
-    // Entry points come from a front-face pass the VolumeScene draws into a per-camera image
-    // (AuxData::EntryPoints), which also sets volren_viewportOrigin and volren_frameStamp.
+    // Entry points come from a front-face pass drawn per camera (ScreenPasses): the volume-space
+    // points of the box's rasterised front faces as image2D volren_entryPoints (rgba32f: xyz,
+    // w = volren_frameStamp of the frame that wrote it); it also sets volren_viewportOrigin and
+    // volren_frameStamp.
+    registry.addAuxKind({.name = "entry points",
+                         .scope = AuxScope::Camera,
+                         .perCamera = [](AuxCameraRequest& r) {
+                             return r.screen.entryState(r.cv, r.node, r.box, r.boxSize, r.matrix);
+                         }});
     ShaderFunction rasterised = raySetup("rasterised");
     rasterised.uniforms.push_back({"volren_viewportOrigin", "vec2", ""});
     rasterised.uniforms.push_back({"volren_frameStamp", "float", ""});
-    rasterised.needs = {AuxData::EntryPoints};
+    rasterised.needs = {"entry points"};
     registry.add(rasterised);
 
     registry.add({.slot = "RaySetup",

@@ -1,6 +1,9 @@
 // Shadowing implementations: the fraction of a light that reaches a sample.
 #include "CommonBindings.h"
 
+#include "../resources/LightVolume.h"
+#include "../resources/OpacityMipChain.h"
+
 #include <volume_renderer/CompositionPolicy.h>
 #include <volume_renderer/ShaderFunctionRegistry.h>
 
@@ -35,7 +38,7 @@ const TextureDecl geometryShadowTexture = {.name = "volren_geometryShadow", .sam
 void bindGeometryShadows(BindContext& c)
 {
     const std::vector<osg::Matrixd>& maps = c.geometryShadowMatrices;
-    auto map = c.aux.find(AuxData::GeometryShadowMap);
+    auto map = c.aux.find("geometry shadow map");
     const int count = map == c.aux.end() ? 0 : int(std::min<std::size_t>(maps.size(), geometryMaps));
     c.uniform("volren_geometryShadowCount", count);
     for (int i = 0; i < count; ++i) {
@@ -115,6 +118,43 @@ const ParameterDecl aoDistance = {
 
 void registerShadowingFunctions(ShaderFunctionRegistry& registry)
 {
+    // The depth of the scene's opaque geometry seen from each light (up to four; a 2D array
+    // texture compared LEQUAL, one layer per light) over the boxes of the volumes that read it,
+    // drawn before the frame by the pass (GeometryShadowMaps), with
+    // BindContext::geometryShadowMatrices: polygons shadow the volumes.
+    registry.addAuxKind({.name = "geometry shadow map", .scope = AuxScope::GeometryFromLights});
+    // Per node, each light's transmittance (one half-float channel per light, four per layer, two
+    // layers) over the volume's box at lightVolumeScale of the sampled level's resolution, edges
+    // repeated outside; built slice by slice (light_volume_build.comp, LightVolume.h) when the
+    // lights or what the classified volume depends on change. It also darkens the opaque
+    // geometry inside the box (ShadowedGeometry).
+    registry.addAuxKind({.name = "light volume",
+                         .build = AuxBuild{.sampler = "volren_lightVolume",
+                                           .readsLights = true,
+                                           .dims =
+                                               [](const osg::Vec3i& level, const BindContext& c) {
+                                                   osg::Vec3i d = lightVolumeDims(level, c.settings.number("lightVolumeScale"));
+                                                   d.z() *= lightVolumeLayers(c.lights.size());  // lights 4-7 in a second layer
+                                                   return d;
+                                               },
+                                           .channels = [](const BindContext& c) { return lightVolumeChannels(c.lights.size()); },
+                                           .plan = [](const BindContext& c, const osg::Vec3d& size,
+                                                      const osg::Vec3i& dims) { return lightVolumePlan(c.lights, size, dims); }},
+                         .darkensGeometry = true});
+    // Per node, the classified extinction (per world unit) at every voxel of the sampled level, as
+    // a half-float 3D texture with a full mip chain (box-filtered on the GPU, zero outside the
+    // box, read from the nearest level: cone steps then fetch half the texels of blending two,
+    // which on llvmpipe cost cones a third of their time, at RMSE within 2% of it), built when the
+    // TF, the volume or a clip shape changes (cone_build.comp, OpacityMipChain.h).
+    registry.addAuxKind(
+        {.name = "opacity mip chain",
+         .build = AuxBuild{.sampler = "volren_opacityMips",
+                           .mipmapped = true,
+                           .wrap = osg::Texture::CLAMP_TO_BORDER,
+                           .minFilter = osg::Texture::LINEAR_MIPMAP_NEAREST,
+                           .dims = [](const osg::Vec3i& level, const BindContext&) { return level; },
+                           .plan = [](const BindContext&, const osg::Vec3d&, const osg::Vec3i& dims) { return opacityVolumePlan(dims); }}});
+
     registry.add({.slot = "Shadowing",
                   .name = "null",
                   .traits = {.calls = SlotList{}},
@@ -129,7 +169,7 @@ void registerShadowingFunctions(ShaderFunctionRegistry& registry)
                                                        {"volren_referenceStep", "float", ""},
                                                        {"volren_shadowCutoffDepth", "float", ""}},
                   .textures = {geometryShadowTexture},
-                  .needs = {AuxData::GeometryShadowMap},
+                  .needs = {"geometry shadow map"},
                   .parameters = {shadowStepFactor, shadowCutoff},
                   .defines = geometryShadowDefine,
                   .compileOptions = geometryShadowOption,
@@ -158,7 +198,7 @@ void registerShadowingFunctions(ShaderFunctionRegistry& registry)
                   .uniforms = bindings::geometry + bindings::lights + geometryShadowUniforms +
                               std::vector<UniformDecl>{{"volren_shadowStep", "float", ""}, {"volren_referenceStep", "float", ""}},
                   .textures = {{"volren_lightVolume", "sampler3D"}, geometryShadowTexture},
-                  .needs = {AuxData::LightVolume, AuxData::GeometryShadowMap},
+                  .needs = {"light volume", "geometry shadow map"},
                   .parameters = {shadowStepFactor,
                                  {.key = "lightVolumeScale", .defaultValue = 0.5, .lo = 0.0, .hi = 1.0, .openLow = true,
                                   .help = "resolution of the light volume as a fraction of the volume's along each axis",
@@ -173,11 +213,10 @@ void registerShadowingFunctions(ShaderFunctionRegistry& registry)
                           // path at the view ray's step (times the shadow step factor).
                           c.uniform("volren_shadowStep", float(c.sampleDistance * c.settings.number("shadowStepFactor")));
                           c.uniform("volren_referenceStep", float(c.volume.minSpacing()));
-                          c.texture("volren_lightVolume", c.aux.at(AuxData::LightVolume).get());
+                          c.texture("volren_lightVolume", c.aux.at("light volume").get());
                       },
                   .traits = {.calls = SlotList{"Reconstruction", "Classification", "ClipPosition", "Weighting"},
                              .clipsPerSample = true,
-                             .shadowsGeometry = true,
                              .aliases = {"lightvolume", "light-volume", "propagated"}},
                   // Trilinear in a half-resolution light volume (MultiVolumeShadows: within 4e-3).
                   .reference = ReferenceModel::approximate("exact shadows", 4e-3)});
@@ -204,7 +243,7 @@ void registerShadowingFunctions(ShaderFunctionRegistry& registry)
         c.uniform("volren_shadowCutoffDepth", float(cutoff > 0.0 ? -std::log(cutoff) : 1e30));
         // One voxel of the chain's finest level (the sampled level), its smallest extent.
         const osg::Vec3d size = c.volume.worldSize();
-        const osg::Texture3D& chain = static_cast<const osg::Texture3D&>(*c.aux.at(AuxData::OpacityMipChain));
+        const osg::Texture3D& chain = static_cast<const osg::Texture3D&>(*c.aux.at("opacity mip chain"));
         const double voxel = std::min({size.x() / chain.getTextureWidth(), size.y() / chain.getTextureHeight(),
                                        size.z() / chain.getTextureDepth()});
         c.uniform("volren_coneVoxel", float(voxel));
@@ -213,7 +252,7 @@ void registerShadowingFunctions(ShaderFunctionRegistry& registry)
         c.uniform("volren_coneStepGrowth", float(c.settings.number("coneStepGrowth")));
         c.uniform("volren_coneFilterSigma", float(c.settings.number("coneFilterSigma")));
         c.uniform("volren_aoDistance", float(c.settings.number("aoDistance") * voxel));
-        c.texture("volren_opacityMips", c.aux.at(AuxData::OpacityMipChain).get());
+        c.texture("volren_opacityMips", c.aux.at("opacity mip chain").get());
     };
     std::vector<ParameterDecl> withAoDistance = coneParameters;
     withAoDistance.push_back(aoDistance);
@@ -224,7 +263,7 @@ void registerShadowingFunctions(ShaderFunctionRegistry& registry)
                       .includes = {"Shadowing/geometry_shadow.glsl", "Shadowing/cone_march.glsl"},
                       .uniforms = coneUniforms,
                       .textures = {{"volren_opacityMips", "sampler3D"}, geometryShadowTexture},
-                      .needs = {AuxData::OpacityMipChain, AuxData::GeometryShadowMap},
+                      .needs = {"opacity mip chain", "geometry shadow map"},
                       .parameters = std::string(name) == "cone" ? coneParameters : withAoDistance,
                       .defines = geometryShadowDefine,
                       .compileOptions = geometryShadowOption,

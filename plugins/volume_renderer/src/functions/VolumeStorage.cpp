@@ -1,22 +1,87 @@
 // VolumeStorage implementations: where the voxels a Reconstruction reads live.
 #include "CommonBindings.h"
 
+#include "../resources/TextureCache.h"
+
 #include <volume_renderer/BrickPool.h>
+#include <volume_renderer/GraphicsDriver.h>
+#include <volume_renderer/SampleDistance.h>
+#include <volume_renderer/ShaderCompositor.h>
 #include <volume_renderer/ShaderFunctionRegistry.h>
 
+#include <volume_model/RenderSettings.h>
+#include <volume_model/TransferFunction.h>
+
 #include <algorithm>
+#include <cmath>
+#include <optional>
 
 namespace volren {
 
+namespace {
+
+/// Whether 8-bit data gets 16-bit texels: as texturePrecision says, or where the driver would
+/// filter 8-bit texels to 8-bit results ("auto").
+bool wideTexels(const BindContext& c)
+{
+    const std::string& precision = c.settings.texturePrecision;
+    return precision == "16bit" || (precision == "auto" && c.coarseByteFiltering);
+}
+
+/// Which bricks the bound transfer function hides, where the traversal leaps over transparent
+/// space (as empty-space skipping by default): the Classification's opacity mirror over each
+/// brick's values with the Reconstruction's footprint and the gradient's one voxel around it.
+/// Null for MIP, isosurfaces, classifications without a mirror and coarse previews.
+std::optional<BrickHidingRule> hidingFor(const AuxRequest& r)
+{
+    const ShaderFunction* traversal = r.chosen("RayTraversal");
+    const ShaderFunction* classification = r.chosen("Classification");
+    const ShaderFunction* reconstruction = r.chosen("Reconstruction");
+    if (!traversal || !classification || !reconstruction || !classification->mayShow || reconstruction->traits.footprint < 0 ||
+        traversal->traits.skips != "opacity" || !traversal->traits.skipsByDefault)
+        return std::nullopt;
+    std::string key = classification->name;
+    bindings::appendParameterValues(key, r.context.settings, *classification);
+    bindings::appendBytes(key, &r.context.transfer);
+    bindings::appendBytes(key, r.context.transfer.modifiedCount());
+    return BrickHidingRule{.apron = reconstruction->traits.footprint + 1, .key = key, .mayShow = classification->mayShow(r.context)};
+}
+
+}  // namespace
+
 void registerVolumeStorageFunctions(ShaderFunctionRegistry& registry)
 {
+    // The texture of the sampled mip level (TextureCache::volume), shared per volume.
+    registry.addAuxKind({.name = "volume texture", .order = 0, .provide = [](AuxRequest& r) -> osg::Texture* {
+                             const BindContext& c = r.context;
+                             return r.textures.volume(c.volume, false, r.cull, c.lod, wideTexels(c));
+                         }});
+    // The volume's mip levels in bricks in a pool texture with their page table (BrickPool.h),
+    // within the node's memory budget. Made first: the budget may hold only coarser levels, and
+    // the volume is then sampled there, at that level's step, as if it were the node's level of
+    // detail (what is shaped by the level is made after it).
+    registry.addAuxKind({.name = "brick pool", .order = 0, .provide = [](AuxRequest& r) -> osg::Texture* {
+                             BindContext& c = r.context;
+                             const std::optional<BrickHidingRule> hiding = hidingFor(r);
+                             const BrickedVolume& bricks =
+                                 r.textures.bricked(c.volume, c.lod, c.settings.brickSize, volumeMemoryBudget(c.settings),
+                                                    largest3DTexture(), wideTexels(c), c.textureToClip,
+                                                    hiding ? &*hiding : nullptr, r.cull);
+                             c.bricks = &bricks;
+                             if (const int level = bricks.levelSampled; level > c.lod) {
+                                 c.sampleDistance = std::ldexp(c.sampleDistance, level - c.lod);
+                                 c.lod = level;
+                             }
+                             return bricks.pool.get();
+                         }});
+
     registry.add({.slot = "VolumeStorage", .name = "null", .traits = {.calls = SlotList{}}});
     // One 3D texture of the sampled mip level (16-bit texels of 8-bit data where texturePrecision
     // says so).
     registry.add({.slot = "VolumeStorage",
                   .name = "texture",
                   .textures = {bindings::volumeTexture},
-                  .needs = {AuxData::VolumeTexture},
+                  .needs = {"volume texture"},
                   .bind = bindings::bindVolumeTexture,
                   .traits = {.calls = SlotList{}}});
     // The levels in bricks in a pool within the node's memoryBudgetMB (BrickPool.h): chosen by the
@@ -31,7 +96,7 @@ void registerVolumeStorageFunctions(ShaderFunctionRegistry& registry)
                                {"volren_brickCounts", "vec3", "16"},
                                {"volren_pageTableZ", "float", "16"}},
                   .textures = {{"volren_brickPool", "sampler3D"}, {"volren_pageTable", "sampler3D"}},
-                  .needs = {AuxData::BrickPool},
+                  .needs = {"brick pool"},
                   .bind =
                       [](BindContext& c) {
                           const BrickedVolume& b = *c.bricks;

@@ -6,14 +6,15 @@ namespace volren {
 
 namespace {
 
-/// Whether a lit implementation of `composition` (or of a set member) needs the geometry's
-/// shadow maps.
+/// Whether a lit implementation of `composition` (or of a set member) needs data the pass makes
+/// from the opaque geometry seen from the lights (AuxScope::GeometryFromLights).
 bool readsGeometryShadows(const Composition& composition, const ShaderFunctionRegistry& registry)
 {
     if (composition.lightCount > 0)
         for (const auto& [slot, name] : composition.choice)
-            if (const ShaderFunction* f = registry.find(slot, name); f && f->needsAux(AuxData::GeometryShadowMap))
-                return true;
+            if (const ShaderFunction* f = registry.find(slot, name))
+                for (const AuxKind* kind : registry.auxKindsOf(*f))
+                    if (kind->scope == AuxScope::GeometryFromLights) return true;
     for (const Composition& member : composition.members)
         if (readsGeometryShadows(member, registry)) return true;
     return false;

@@ -41,8 +41,8 @@ struct VolumeScene::Pass
               std::set<std::string>& keys);
     /// Composes and binds the proxy of one volume.
     VolumeProxy& update(const VolumeCandidate& c, const ChosenComposition& chosen, ShaderCompositor& compositor);
-    /// Schedules the darkening of the opaque geometry by `c`'s light volume where its Shadowing
-    /// (in `composition`) shadows the geometry and `proxy` was drawn.
+    /// Schedules the darkening of the opaque geometry by `c`'s built volume of a kind that darkens
+    /// it (AuxKind::darkensGeometry) where `composition` (lit) needs one and `proxy` was drawn.
     void shadowGeometry(osgUtil::CullVisitor& cv, const VolumeCandidate& c, const Composition& composition,
                         const VolumeProxy& proxy);
     /// Forgets proxies and textures no cull traversal used lately.
@@ -66,13 +66,17 @@ void VolumeScene::Pass::draw(osgUtil::CullVisitor& cv, VolumeProxy& proxy, const
         for (const osg::ref_ptr<osg::Node>& node : proxy.prepasses) node->accept(cv);
         cv.popStateSet();
     }
+    // The per-camera auxiliary data its program needs, each kind once.
+    std::vector<const AuxKind*> perCamera;
+    for (const Binding& b : proxy.program->bindings)
+        for (const AuxKind* kind : ShaderFunctionRegistry::instance().auxKindsOf(*b.function))
+            if (kind->scope == AuxScope::Camera && std::find(perCamera.begin(), perCamera.end(), kind) == perCamera.end())
+                perCamera.push_back(kind);
     int pushed = 0;
-    if (proxy.program->needs(AuxData::DepthTexture)) {
-        cv.pushStateSet(screen.depthState(cv, proxy.program->textureUnits.at("volren_depthTexture")));
-        ++pushed;
-    }
-    if (proxy.program->needs(AuxData::EntryPoints)) {
-        cv.pushStateSet(screen.entryState(cv, node, *proxy.geometry, proxy.boxSize, matrix));
+    for (const AuxKind* kind : perCamera) {
+        AuxCameraRequest request{.cv = cv, .screen = screen, .program = *proxy.program, .node = node, .box = *proxy.geometry,
+                              .boxSize = proxy.boxSize, .matrix = matrix};
+        cv.pushStateSet(kind->perCamera(request));
         ++pushed;
     }
     proxy.transform->accept(cv);
@@ -98,9 +102,11 @@ void VolumeScene::Pass::shadowGeometry(osgUtil::CullVisitor& cv, const VolumeCan
 {
     // A hidden volume (its TF shows nothing) casts no shadow, and its light volume was not rebuilt.
     if (proxy.hidden || !c.offer.opaqueGeometry || composition.lightCount == 0 || c.offer.lights.empty()) return;
-    const ShaderFunction* f = ShaderFunctionRegistry::instance().find("Shadowing", composition.functionFor("Shadowing"));
-    if (!f || !f->traits.shadowsGeometry) return;
-    osg::Texture3D* lightVolume = textures.builtVolumes().find(c.node, AuxData::LightVolume);
+    osg::Texture3D* lightVolume = nullptr;  // each light's transmittance
+    for (const auto& [slot, name] : composition.choice)
+        if (const ShaderFunction* f = ShaderFunctionRegistry::instance().find(slot, name))
+            for (const AuxKind* kind : ShaderFunctionRegistry::instance().auxKindsOf(*f))
+                if (kind->darkensGeometry && !lightVolume) lightVolume = textures.builtVolumes().find(c.node, kind->name);
     if (!lightVolume) return;
     const std::vector<LightInfo> lights(c.offer.lights.begin(),
                                         c.offer.lights.begin() + std::min<std::ptrdiff_t>(composition.lightCount,

@@ -2,7 +2,6 @@
 // composition's compute program in the dispatches its plan lists (mip levels too: the driver's
 // mipmap generation may blend the zero border into edge texels, so the plan writes them).
 #include "BuiltVolumes.h"
-#include "BuiltVolumeKinds.h"
 
 #include <volume_model/Volume.h>
 #include <volume_model/VolumeNode.h>
@@ -143,10 +142,12 @@ struct BuiltVolumes::Entry
 BuiltVolumes::BuiltVolumes() = default;
 BuiltVolumes::~BuiltVolumes() = default;
 
-osg::Texture3D* BuiltVolumes::texture(const VolumeNode* node, AuxData kind, const osg::Vec3i& dims, int channels,
-                                      bool mipmapped, unsigned int cull)
+osg::Texture3D* BuiltVolumes::texture(const VolumeNode* node, const AuxKind& kind, const osg::Vec3i& dims, int channels,
+                                      unsigned int cull)
 {
-    std::unique_ptr<Entry>& e = _entries[{node, kind}];
+    const AuxBuild& build = *kind.build;
+    const bool mipmapped = build.mipmapped;
+    std::unique_ptr<Entry>& e = _entries[{node, kind.name}];
     if (!e) {
         e = std::make_unique<Entry>();
         e->geode->addDrawable(e->build.get());
@@ -171,13 +172,9 @@ osg::Texture3D* BuiltVolumes::texture(const VolumeNode* node, AuxData kind, cons
         t->setInternalFormat(formats[channels]);
         t->setSourceFormat(sources[channels]);
         t->setSourceType(GL_HALF_FLOAT);
-        // A light volume repeats its edges; a mip chain of opacity has nothing outside the box.
-        const osg::Texture::WrapMode wrap = mipmapped ? osg::Texture::CLAMP_TO_BORDER : osg::Texture::CLAMP_TO_EDGE;
-        for (auto w : {osg::Texture::WRAP_S, osg::Texture::WRAP_T, osg::Texture::WRAP_R}) t->setWrap(w, wrap);
+        for (auto w : {osg::Texture::WRAP_S, osg::Texture::WRAP_T, osg::Texture::WRAP_R}) t->setWrap(w, build.wrap);
         t->setBorderColor(osg::Vec4d(0, 0, 0, 0));
-        // A mip chain is read from its nearest level (cone steps: half the texels of blending two,
-        // which on llvmpipe cost cones a third of their time, at RMSE within 2% of it).
-        t->setFilter(osg::Texture::MIN_FILTER, mipmapped ? osg::Texture::LINEAR_MIPMAP_NEAREST : osg::Texture::LINEAR);
+        t->setFilter(osg::Texture::MIN_FILTER, build.minFilter);
         t->setFilter(osg::Texture::MAG_FILTER, osg::Texture::LINEAR);
         t->setUseHardwareMipMapGeneration(false);  // the build makes the levels
         if (mipmapped) {  // OSG samples levels up to this count only (GL_TEXTURE_MAX_LEVEL)
@@ -196,13 +193,13 @@ osg::Texture3D* BuiltVolumes::texture(const VolumeNode* node, AuxData kind, cons
     return t;
 }
 
-osg::Texture3D* BuiltVolumes::find(const VolumeNode* node, AuxData kind) const
+osg::Texture3D* BuiltVolumes::find(const VolumeNode* node, const std::string& kind) const
 {
     auto it = _entries.find({node, kind});
     return it == _entries.end() ? nullptr : it->second->texture.get();
 }
 
-osg::Node* BuiltVolumes::build(const VolumeNode* node, AuxData kind, const std::string& key, osg::Program* program,
+osg::Node* BuiltVolumes::build(const VolumeNode* node, const std::string& kind, const std::string& key, osg::Program* program,
                                std::vector<BuildDispatch> plan)
 {
     Entry& e = *_entries.at({node, kind});
@@ -210,7 +207,9 @@ osg::Node* BuiltVolumes::build(const VolumeNode* node, AuxData kind, const std::
         e.state->setAttributeAndModes(program, osg::StateAttribute::ON);
         e.program = program;
     }
-    const std::string full = key + " " + std::to_string(reinterpret_cast<std::uintptr_t>(e.texture.get()));
+    std::string full = key;  // and the texture it is built into (bytes of the pointer)
+    const osg::Texture3D* texture = e.texture.get();
+    full.append(reinterpret_cast<const char*>(&texture), sizeof(texture));
     if (e.build->builtKey() == full) return nullptr;
     e.build->schedule(full, e.texture.get(), std::move(plan), e.mipmapped);
     return e.geode.get();
@@ -235,7 +234,7 @@ std::vector<BuiltVolumeStatistics> BuiltVolumes::statistics(unsigned int cull) c
     for (const auto& [key, e] : _entries) {
         if (e->lastCull != cull || !e->texture) continue;
         const osg::Vec3i dims(e->texture->getTextureWidth(), e->texture->getTextureHeight(), e->texture->getTextureDepth());
-        out.push_back({e->name, builtVolumeKind(key.second)->name, dims, e->channels, e->bytes(), e->voxels, e->build->builds(),
+        out.push_back({e->name, key.second, dims, e->channels, e->bytes(), e->voxels, e->build->builds(),
                        e->build->lastSeconds()});
     }
     return out;

@@ -1,6 +1,6 @@
 #pragma once
 // Internal to the pass: the depth maps of a VolumeScene's opaque geometry seen from each light
-// (AuxData::GeometryShadowMap), through which the shadowing methods let polygons between a
+// (the auxiliary data kind "geometry shadow map"), through which the shadowing methods let polygons between a
 // light and a volume shadow it.
 #include <volume_renderer/BindContext.h>
 

@@ -1,7 +1,8 @@
 #pragma once
 // Internal to the pass: the shape and build plan of a propagated light volume (Shadowing
-// light_volume), a BuiltVolumes entry of kind AuxData::LightVolume.
-#include "BuiltVolumes.h"
+// light_volume), the auxiliary data kind "light volume" (declared in functions/Shadowing.cpp).
+#include <volume_renderer/AuxKind.h>
+#include <volume_renderer/BindContext.h>
 
 #include <vector>
 

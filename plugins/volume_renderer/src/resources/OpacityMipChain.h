@@ -1,7 +1,8 @@
 #pragma once
-// Internal to the pass: the build plan of an opacity mip chain (Shadowing cone, cone_ao), a
-// BuiltVolumes entry of kind AuxData::OpacityMipChain.
-#include "BuiltVolumes.h"
+// Internal to the pass: the build plan of an opacity mip chain (Shadowing cone, cone_ao),
+// the auxiliary data kind "opacity mip chain" (declared in functions/Shadowing.cpp).
+#include <volume_renderer/AuxKind.h>
+#include <volume_renderer/BindContext.h>
 
 #include <vector>
 
