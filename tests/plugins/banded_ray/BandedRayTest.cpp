@@ -138,6 +138,13 @@ TEST_F(BandedRayAgainstReference, MatchesTheExactShadowsItDeclaresWithinItsBound
     camera.view = osg::Matrixd::lookAt(osg::Vec3d(20, -50, 35), osg::Vec3d(0, 0, 0), osg::Vec3d(0, 0, 1));
     camera.projection = osg::Matrixd::perspective(40, 1.0, 10, 200);
     const Pixels gpu = render(scene.get(), camera.width, camera.height, camera.view, camera.projection);
+    // Its auxiliary volume, made by the pass from its declaration alone: once, the level's size.
+    const std::vector<BuiltVolumeStatistics> built = scene->builtVolumeStatistics();
+    ASSERT_EQ(built.size(), 1u);
+    EXPECT_EQ(built[0].kind, "band extinction");
+    EXPECT_EQ(built[0].dims, osg::Vec3i(16, 16, 16));
+    EXPECT_EQ(built[0].channels, 1);
+    EXPECT_EQ(built[0].builds, 1u);
     const ReferenceSetup setup = referenceSetup(*scene, camera, {});
     ASSERT_EQ(setup.scene.volumes.size(), 1u);
     EXPECT_EQ(setup.scene.volumes[0].shadows, ReferenceScene::Shadows::Exact) << "its declared model";

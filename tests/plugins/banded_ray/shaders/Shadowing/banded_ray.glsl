@@ -1,7 +1,9 @@
 // Shadowing/banded_ray (a plugin's, tests/plugins/banded_ray): the light reaching a sample through
-// its own volume, marched in volren_bandCount equal segments, each sampled at its midpoint, from
-// the sample to where the light's path leaves the box (or reaches a point light), however long
-// that path is. Clipped-away samples cast no shadow; opaque geometry is not looked at.
+// its own volume, marched in volren_bandCount equal segments from the sample to where the light's
+// path leaves the box (or reaches a point light), however long that path is: each segment's
+// optical depth is its length times the extinction read (trilinear) at its midpoint from the
+// auxiliary volume volren_bandExtinction (built by banded_ray_build.comp; clipped-away voxels hold
+// none). Opaque geometry is not looked at.
 // float volren_shadow(vec3 pos, vec3 lightDir, float lightDistance, int light)
 float volren_shadow(vec3 pos, vec3 lightDir, float lightDistance, int light)
 {
@@ -9,13 +11,9 @@ float volren_shadow(vec3 pos, vec3 lightDir, float lightDistance, int light)
     float len = min(volren_boxExit(pos, dirTex), lightDistance);
     if (!(len > 0.0)) return 1.0;
     float h = len / float(volren_bandCount);
-    float ratio = h / volren_referenceStep;
     float depth = 0.0;
-    for (int i = 0; i < volren_bandCount; ++i) {
-        vec3 p = pos + dirTex * ((float(i) + 0.5) * h);
-        if (volren_clipPosition(p)) continue;
-        depth += volren_opticalDepth(volren_classify(volren_fetchScalar(p)).a * volren_weight(p), ratio);
-    }
+    for (int i = 0; i < volren_bandCount; ++i)
+        depth += texture(volren_bandExtinction, pos + dirTex * ((float(i) + 0.5) * h)).r * h;
     return exp(-depth);
 }
 
