@@ -125,6 +125,7 @@ int viewCommand(const std::vector<std::string>& args)
     if (options.samples > 1) osg::DisplaySettings::instance()->setNumMultiSamples(options.samples);  // an MSAA window
     osgViewer::Viewer viewer;
     viewer.setThreadingModel(osgViewer::ViewerBase::SingleThreaded);
+    viewer.setUseConfigureAffinity(false);  // no pin to CPU 0 for this thread and those it starts
     viewer.setUpViewInWindow(50, 50, options.width, options.height);
     viewer.setSceneData(root.get());
 

@@ -108,6 +108,9 @@ OffscreenRenderer::OffscreenRenderer(int width, int height, int samples) : _samp
 
     _viewer = new osgViewer::Viewer;
     _viewer->setThreadingModel(osgViewer::ViewerBase::SingleThreaded);
+    // OSG pins a single-threaded viewer's thread to CPU 0, and every thread started after it
+    // (reference workers, brick loaders) inherits the pin: one core for all of them.
+    _viewer->setUseConfigureAffinity(false);
     _viewer->setUpViewerAsEmbeddedInWindow(0, 0, width, height);
     _viewer->setKeyEventSetsDone(0);
     _viewer->setQuitEventSetsDone(false);
