@@ -331,7 +331,7 @@ private:
             if (!t.glErrors.empty()) throw std::runtime_error(name + ": GL error: " + t.glErrors.front());
             if (f < 2) continue;
             draw.push_back(t.drawMs);
-            gpu.push_back(t.gpuMs);
+            if (t.gpuMs >= 0.0) gpu.push_back(t.gpuMs);  // a timer value that cannot be true is left out
             cpu.push_back(t.cpuMs);
         }
         const double freeAfter = freeGpuMemoryMb(*_renderer.state());
@@ -344,7 +344,7 @@ private:
         std::vector<double> deviation;
         for (double ms : draw) deviation.push_back(std::abs(ms - row.frameMs));
         row.frameNoiseMs = median(deviation);
-        row.gpuMs = median(gpu);
+        row.gpuMs = gpu.empty() ? -1.0 : median(gpu);
         row.cpuMs = median(cpu);
         row.textureMb = double(_renderer.volumeScene()->textureBytes()) / (1024.0 * 1024.0);
         row.gpuMemoryMb = freeBefore >= 0.0 && freeAfter >= 0.0 ? freeBefore - freeAfter : -1.0;

@@ -1,16 +1,14 @@
 #include "CommandLine.h"
 #include "Commands.h"
+#include "SweepHarness.h"
 
 #include <volume_renderer/OffscreenRenderer.h>
 #include <volume_renderer/Permutations.h>
 
-#include <volume_model/ClipBoxNode.h>
-#include <volume_model/ClipPlaneNode.h>
 #include <volume_model/ParseNumber.h>
 
 #include <nlohmann/json.hpp>
 #include <osg/GLObjects>
-#include <osg/LightSource>
 #include <osgDB/FileNameUtils>
 #include <osgDB/FileUtils>
 
@@ -19,46 +17,12 @@
 #include <cmath>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <tuple>
 
 namespace volren::app {
 
 namespace {
-
-/// A small scene that gives every slot something to do: a float volume (a soft ball), a TF,
-/// a light, a clip plane and a clip box.
-osg::ref_ptr<VolumeScene> sweepScene()
-{
-    osg::ref_ptr<Volume> volume = new Volume;
-    volume->allocate(VoxelType::Float32, {12, 10, 8});
-    auto* v = reinterpret_cast<float*>(volume->data());
-    for (int z = 0; z < 8; ++z)
-        for (int y = 0; y < 10; ++y)
-            for (int x = 0; x < 12; ++x) {
-                const double dx = (x - 5.5) / 6, dy = (y - 4.5) / 5, dz = (z - 3.5) / 4;
-                v[x + 12 * (y + 10 * z)] = float(std::max(0.0, 1.0 - std::sqrt(dx * dx + dy * dy + dz * dz)));
-            }
-    volume->dirty();
-    osg::ref_ptr<TransferFunction> tf = new TransferFunction;
-    tf->setPoint(0.0, osg::Vec4(0, 0, 0, 0));
-    tf->setPoint(1.0, osg::Vec4(1, 0.8f, 0.6f, 0.5f));
-    osg::ref_ptr<VolumeNode> node = new VolumeNode;
-    node->setName("sweep");
-    node->setVolume(volume.get());
-    node->setTransferFunction(tf.get());
-    osg::ref_ptr<VolumeScene> scene = new VolumeScene;
-    scene->addChild(node.get());
-    osg::ref_ptr<osg::LightSource> light = new osg::LightSource;
-    light->getLight()->setPosition(osg::Vec4(1, 1, 1, 0));
-    scene->addChild(light.get());
-    osg::ref_ptr<ClipPlaneNode> plane = new ClipPlaneNode;
-    plane->plane.set(1.0, 0.0, 0.0, 2.0);
-    scene->addChild(plane.get());
-    osg::ref_ptr<ClipBoxNode> box = new ClipBoxNode;
-    box->box.set(-5, -4, -3, 5, 4, 3);
-    scene->addChild(box.get());
-    return scene;
-}
 
 /// Writes composition `index`'s key and composed fragment source (INDEX.frag) and its 8x8 RGBA
 /// float image (INDEX.rgba, raw) into `dir`: two runs' folders compare with `diff -r`.
@@ -96,10 +60,12 @@ double median(std::vector<double> v)
 /// The options of `volren permutations`.
 struct SweepOptions
 {
-    bool list = false, compile = false, render = false, pairwise = false;
+    bool list = false, compile = false, render = false, pairwise = false, check = true;
+    SweepLimits limits;
     unsigned int maxInstances = 1, maxLights = 1;
     std::size_t first = 0, count = std::size_t(-1), shard = 0, shards = 1;
     std::string statsFile, dumpDir;
+    std::vector<std::pair<std::string, std::string>> where;  ///< --where SLOT=NAME: compositions choosing it
 };
 
 /// "I/N" of --shard.
@@ -139,6 +105,15 @@ SweepOptions parseSweepOptions(const std::vector<std::string>& args)
         else if (args[i] == "--count") o.count = number(i, "--count");
         else if (args[i] == "--shard") std::tie(o.shard, o.shards) = parseShard(i + 1 < args.size() ? args[++i] : "");
         else if (args[i] == "--dump") o.dumpDir = text(i, "--dump needs a folder");
+        else if (args[i] == "--no-check") o.check = false;
+        else if (args[i] == "--where") {
+            const std::string& spec = text(i, "--where needs SLOT=NAME");
+            const std::size_t eq = spec.find('=');
+            if (eq == std::string::npos || eq == 0 || eq + 1 == spec.size())
+                throw UsageError("--where needs SLOT=NAME, got '" + spec + "'");
+            o.where.emplace_back(spec.substr(0, eq), spec.substr(eq + 1));
+        }
+        else if (args[i] == "--time-limit") o.limits.frameMs = double(number(i, "--time-limit (ms)"));
         else if (args[i] == "--stats") o.statsFile = text(i, "--stats needs a file");
         else throw UsageError("permutations: unknown option '" + args[i] + "'");
     }
@@ -155,6 +130,16 @@ std::vector<std::size_t> selection(const PermutationSpace& space, const SweepOpt
     if (o.pairwise) indices = space.pairwiseCover();
     else
         for (std::size_t i = 0; i < space.size(); ++i) indices.push_back(i);
+    if (!o.where.empty()) {  // only the compositions that choose every --where implementation
+        std::vector<std::size_t> chosen;
+        for (std::size_t i : indices) {
+            const Composition c = space.at(i);
+            bool all = true;
+            for (const auto& [slot, name] : o.where) all = all && c.functionFor(slot) == name;
+            if (all) chosen.push_back(i);
+        }
+        indices = std::move(chosen);
+    }
     if (o.shards <= 1) return indices;
     std::vector<std::size_t> mine;
     for (std::size_t i = o.shard; i < indices.size(); i += o.shards) mine.push_back(indices[i]);
@@ -192,20 +177,27 @@ std::string compileOnly(const Composition& composition, OffscreenRenderer& rende
     return problem;
 }
 
-/// Draws `composition` (composed, compiled, linked at draw by llvmpipe); returns what went wrong.
-std::string renderOne(const Composition& composition, std::size_t index, VolumeScene& scene,
-                      OffscreenRenderer& renderer, const std::string& dumpDir, std::vector<double>& ms)
+/// Draws `composition` (composed, compiled, linked at draw by llvmpipe) and checks the frame
+/// (SweepHarness.h; with `check` off only a compile or link error fails it); `without` is the
+/// scene's frame without its volume.
+std::vector<SweepFailure> renderOne(const Composition& composition, std::size_t index, VolumeScene& scene,
+                                    OffscreenRenderer& renderer, const osg::Image& without, const SweepOptions& o,
+                                    std::vector<double>& ms)
 {
     scene.forcedComposition = composition;
     const auto start = std::chrono::steady_clock::now();
-    renderer.renderFrame();
+    FrameTiming timing;
+    std::string thrown;
+    try {
+        timing = renderer.renderFrame();
+    } catch (const std::exception& e) {
+        thrown = e.what();
+    }
     ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-    const auto* px = reinterpret_cast<const float*>(renderer.image()->data());
-    std::string problem;
-    for (int k = 0; k < 8 * 8 * 4; ++k)
-        if (!std::isfinite(px[k])) problem = "NaN or Inf pixel";
-    if (!dumpDir.empty()) dumpComposition(dumpDir, index, scene, px);
-    return problem;
+    timing.cpuMs = ms.back();
+    if (!o.dumpDir.empty()) dumpComposition(o.dumpDir, index, scene, reinterpret_cast<const float*>(renderer.image()->data()));
+    if (!o.check) return thrown.empty() ? std::vector<SweepFailure>{} : std::vector<SweepFailure>{{"link", thrown}};
+    return checkFrame(composition, timing, thrown, *renderer.image(), without, o.limits);
 }
 
 }  // namespace
@@ -231,21 +223,37 @@ int permutationsCommand(const std::vector<std::string>& args)
     renderer.setScene(scene.get());
     renderer.camera()->setViewMatrixAsLookAt(osg::Vec3d(20, -25, 15), osg::Vec3d(), osg::Vec3d(0, 0, 1));
     renderer.camera()->setProjectionMatrixAsPerspective(40, 1, 1, 100);
+    // The frame without the volume: what "nothing drawn" compares with.
+    osg::ref_ptr<osg::Image> without;
+    if (o.render) {
+        osg::Node* volume = scene->getChild(0);
+        volume->setNodeMask(0);
+        renderer.renderFrame();
+        without = new osg::Image(*renderer.image(), osg::CopyOp::DEEP_COPY_ALL);
+        volume->setNodeMask(~0u);
+    }
     std::vector<double> ms;
     nlohmann::json resident = nlohmann::json::array();  // resident memory every memoryEvery compositions
     nlohmann::json failed = nlohmann::json::array();
+    std::map<std::string, std::size_t> failedChecks;  // check -> compositions failing it
+    std::size_t failedCompositions = 0;
     for (std::size_t i = first; i < end; ++i) {
         const Composition composition = space.at(indices[i]);
-        std::string problem;
+        std::vector<SweepFailure> failures;
         try {
-            problem = o.render ? renderOne(composition, indices[i], *scene, renderer, o.dumpDir, ms)
-                               : compileOnly(composition, renderer, ms);
+            if (o.render) failures = renderOne(composition, indices[i], *scene, renderer, *without, o, ms);
+            else if (std::string problem = compileOnly(composition, renderer, ms); !problem.empty())
+                failures.push_back({"link", problem});
         } catch (const std::exception& e) {
-            problem = e.what();
+            failures.push_back({"compose", e.what()});
         }
-        if (!problem.empty()) {
-            failed.push_back({{"key", composition.key()}, {"error", problem}});
-            std::cout << "FAILED " << composition.key() << "\n  " << problem << std::endl;
+        failedCompositions += !failures.empty();
+        for (const SweepFailure& f : failures) {
+            ++failedChecks[f.check];
+            failed.push_back({{"key", composition.key()}, {"check", f.check}, {"detail", f.detail}});
+            std::string line = f.detail;  // one line per failure: a GLSL log's lines joined
+            for (std::size_t at = 0; (at = line.find('\n', at)) != std::string::npos;) line.replace(at, 1, " | ");
+            std::cout << "FAILED " << composition.key() << ": " << f.check << ": " << line << std::endl;
         }
         if ((i - first + 1) % memoryEvery == 0) {
             const double mb = residentMb();
@@ -253,18 +261,19 @@ int permutationsCommand(const std::vector<std::string>& args)
             std::cout << "  " << (i - first + 1) << " done, resident " << mb << " MB" << std::endl;
         }
     }
-    std::cout << (o.render ? "rendered " : "compiled ") << ms.size() << ", failures " << failed.size() << ", median "
+    std::cout << (o.render ? "rendered " : "compiled ") << ms.size() << ", failures " << failedCompositions << ", median "
               << (o.render ? "frame incl. compile" : "compile+link") << " " << median(ms) << " ms" << std::endl;
     if (!o.statsFile.empty()) {
         nlohmann::json stats = {{"valid_compositions", space.size()}, {"tested", ms.size()},
-                                {"failures", failed.size()}, {"failed", failed}, {"median_ms", median(ms)},
+                                {"failures", failedCompositions}, {"failed", failed}, {"failed_checks", failedChecks},
+                                {"checked", o.render && o.check}, {"median_ms", median(ms)},
                                 {"mode", o.render ? "render" : "compile"}, {"pairwise", o.pairwise},
                                 {"max_instances", o.maxInstances}, {"max_lights", o.maxLights},
                                 {"shard", o.shard}, {"shards", o.shards},
                                 {"resident", resident}, {"peak_resident_mb", peakResidentMb()}};
         std::ofstream(o.statsFile) << stats.dump(2) << "\n";
     }
-    return failed.empty() ? 0 : 1;
+    return failedCompositions == 0 ? 0 : 1;
 }
 
 }  // namespace volren::app

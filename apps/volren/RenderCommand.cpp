@@ -73,7 +73,8 @@ int renderCommand(const std::vector<std::string>& args, bool defaultRun)
         stats["context"] = renderer.contextDescription();
         stats["timing_note"] =
             "cpu_ms: whole frame; draw_ms: first draw call to glFinish; gpu_ms: GL_TIME_ELAPSED query, "
-            "which on Mesa llvmpipe does not include rasterisation (use draw_ms there)";
+            "which on Mesa llvmpipe does not include rasterisation (use draw_ms there); null where the query "
+            "returned a time longer than the whole frame's, which cannot be true";
         stats["composition_keys"] = renderer.volumeScene()->compositionKeys();
         nlohmann::json bricks = nlohmann::json::array();  // bricked volumes: what their pools hold
         for (const BrickStatistics& b : renderer.volumeScene()->brickStatistics())

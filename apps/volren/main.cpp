@@ -57,7 +57,11 @@ const std::vector<std::pair<std::string, std::string>>& commandUsages()
         {"permutations",
          "  volren permutations [--list] [--compile | --render] [--pairwise] [--max-instances N]\n"
          "                [--max-lights N] [--shard I/N] [--first I] [--count N] [--stats FILE.json]\n"
-         "                [--dump DIR]   (with --render: each composition's source and image into DIR)\n"},
+         "                [--dump DIR]   (with --render: each composition's source and image into DIR)\n"
+         "                [--where SLOT=NAME]...   (only compositions that choose these implementations)\n"
+         "                [--no-check] [--time-limit MS]   (--render checks each frame: composing, compile\n"
+         "                and link, GL errors, finite pixels, the volume drawn, the frame's time; it exits 1\n"
+         "                and prints 'FAILED <key>: <check>: <measured>' for each failed check)\n"},
         {"--help", "  volren --help | volren COMMAND --help | volren --version\n"},
     };
     return usages;

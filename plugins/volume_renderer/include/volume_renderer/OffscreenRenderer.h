@@ -21,6 +21,8 @@ struct FrameTiming
     /// GL errors raised during the frame, as the driver's debug messages. In core profiles the
     /// one legacy call Debian's GL2-built OSG makes per frame is left out.
     std::vector<std::string> glErrors;
+    /// Volumes the frame could not draw, and why (VolumeScene::drawErrors).
+    std::vector<std::string> drawErrors;
 };
 
 /// Renders a scene with no display: a HeadlessContext drives an embedded osgViewer whose
@@ -78,7 +80,6 @@ private:
     osg::ref_ptr<GpuTimer> _timer;
     std::unique_ptr<ErrorLog> _errors;
     int _width, _height;
-    bool _checked = false;
 };
 
 }  // namespace volren

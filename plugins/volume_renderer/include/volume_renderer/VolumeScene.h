@@ -51,6 +51,9 @@ public:
     /// The program of each volume (or set: names joined by " + ") drawn in the last cull
     /// traversal, with the node's name.
     std::vector<std::pair<std::string, std::shared_ptr<const ComposedProgram>>> programs() const;
+    /// Why volumes of the last cull traversal were not drawn (composing or binding threw), one
+    /// message per volume naming it; empty when every volume was drawn (or hidden by its TF).
+    std::vector<std::string> drawErrors() const;
     /// Throws std::runtime_error with "file:line" messages if a program drawn in the last cull
     /// traversal failed to compile or link in `state`'s context (call after a frame).
     void checkPrograms(osg::State& state) const;

@@ -305,7 +305,6 @@ void OffscreenRenderer::setScene(osg::Node* root)
     }
     _scene = scene;
     _viewer->setSceneData(_scene.get());
-    _checked = false;
     // The old scene's arrays may be freed now, and new ones allocated at their addresses.
     if (_context->makeCurrent()) forgetClientArrays(*state());
 }
@@ -341,10 +340,12 @@ FrameTiming OffscreenRenderer::renderFrame()
     timing.glErrors = _errors->messages;
     timing.drawMs = _timer->drawMs;
     timing.cpuMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    if (!_checked) {
-        _scene->checkPrograms(*_viewer->getCamera()->getGraphicsContext()->getState());
-        _checked = true;
-    }
+    // The draw the query timed ran, and was waited for, within this wall time: a longer GPU time
+    // cannot be true (llvmpipe returned 2,043,847 ms for a 140 ms draw), so it is unavailable.
+    if (timing.gpuMs > timing.cpuMs) timing.gpuMs = -1.0;
+    // Every frame: a program first used in this frame (a new composition) is checked as it is.
+    _scene->checkPrograms(*_viewer->getCamera()->getGraphicsContext()->getState());
+    timing.drawErrors = _scene->drawErrors();
     return timing;
 }
 

@@ -33,6 +33,7 @@ struct VolumeScene::Pass
     std::map<std::vector<const VolumeNode*>, VolumeProxy> sets;  ///< multi-volume sets, by member
     std::set<std::vector<const VolumeNode*>> warnedOverlaps;
     std::vector<std::string> lastKeys;
+    std::vector<std::string> errors;  ///< why volumes of the last cull were not drawn
     unsigned int cull = 0;
     osg::ref_ptr<osg::StateSet> normalizing;  ///< GL_NORMALIZE for the models below (compatibility contexts)
 
@@ -180,6 +181,7 @@ void VolumeScene::traverse(osg::NodeVisitor& nv)
     p.textures.setBrickStreaming(std::size_t(pass.uploadBudgetMB * 1048576.0), !pass.streamBricks);
     cullGeometryShadows(*cv, *this, candidates, chosen, _policy.registry(), p.geometryShadows);
     std::set<std::string> keys;
+    p.errors.clear();
     for (const RayGroup& group : _policy.rayGroups(bounds, compositions, forcedComposition.has_value())) {
         std::vector<const VolumeNode*> nodes;
         for (std::size_t i : group.members) nodes.push_back(candidates[i].node);
@@ -213,6 +215,7 @@ void VolumeScene::traverse(osg::NodeVisitor& nv)
             } catch (const std::exception& e) {
                 OSG_WARN << "volren: cannot draw volume '" << candidates[i].node->getName() << "': " << e.what()
                          << std::endl;
+                p.errors.push_back("volume '" + candidates[i].node->getName() + "': " + e.what());
             }
         }
     }
@@ -224,6 +227,12 @@ std::vector<std::string> VolumeScene::compositionKeys() const
 {
     std::lock_guard<std::mutex> lock(_mutex);
     return _state->lastKeys;
+}
+
+std::vector<std::string> VolumeScene::drawErrors() const
+{
+    std::lock_guard<std::mutex> lock(_mutex);
+    return _state->errors;
 }
 
 std::vector<BrickStatistics> VolumeScene::brickStatistics() const
