@@ -22,6 +22,7 @@ packages=(
   xvfb xauth netpbm
   libimgui-dev fonts-dejavu-core
   python3-dev python3-numpy pybind11-dev
+  python3-zarr
 )
 
 # The fuzzers (tests/fuzz, optional) need clang and its libFuzzer runtime: VOLREN_SETUP_FUZZ=1.
