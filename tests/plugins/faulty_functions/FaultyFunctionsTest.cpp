@@ -104,5 +104,17 @@ TEST(FaultyFunctions, ABrokenGlslFileOnTheShaderPathFailsEveryCompositionThatUse
     EXPECT_EQ(real.status, 0) << real.output;
 }
 
+TEST(FaultyFunctions, ABrokenIncludeOnTheShaderPathOverridesItAndIsNoImplementation)
+{
+    const Sweep s = sweep(std::string("VOLREN_SHADER_PATH='") + BROKEN_INCLUDE_DIR + "'", {"Acceleration=occupancy"}, 2);
+    expectCaught(s, "link", "Acceleration=occupancy", 2);
+    // The same number of valid compositions as without it: the include is not an Acceleration.
+    const Sweep real = sweep("", {"Acceleration=occupancy"}, 2);
+    EXPECT_EQ(real.status, 0) << real.output;
+    const auto spaceLine = [](const std::string& out) { return out.substr(0, out.find(" valid compositions")); };
+    EXPECT_EQ(spaceLine(s.output.substr(s.output.find("volren permutations:"))),
+              spaceLine(real.output.substr(real.output.find("volren permutations:"))));
+}
+
 }  // namespace
 }  // namespace volren::test

@@ -14,7 +14,8 @@ namespace volren {
 ///   (colon-separated), each exporting `extern "C" void volrenRegisterShaderFunctions(
 ///   volren::ShaderFunctionRegistry&)`;
 /// - GLSL files `<Slot>/<name>.glsl` in the folders of $VOLREN_SHADER_PATH that name no
-///   registered implementation: they become implementations that bind nothing (they may
+///   registered implementation and that no registered implementation includes: they become
+///   implementations that bind nothing (they may
 ///   declare their own uniforms and use any the composition declares).
 class ShaderFunctionRegistry
 {

@@ -14,6 +14,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <dlfcn.h>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 
@@ -106,13 +107,21 @@ std::vector<std::string> ShaderFunctionRegistry::loadPlugins()
 
 std::size_t ShaderFunctionRegistry::addShaderDirectoryFunctions()
 {
+    // The files registered implementations read (their own, includes, builds): a copy of one on
+    // the path overrides it and is not an implementation of its own.
+    std::set<std::string> used;
+    for (const auto& [slot, functions] : _functions)
+        for (const auto& [name, f] : functions) {
+            used.insert(f.file);
+            used.insert(f.includes.begin(), f.includes.end());
+        }
     std::size_t added = 0;
     for (const std::string& dir : pathList("VOLREN_SHADER_PATH")) {
         for (const SlotInfo& slot : slots()) {
             for (const std::string& file : osgDB::getDirectoryContents(osgDB::concatPaths(dir, slot.name))) {
                 if (osgDB::getFileExtension(file) != "glsl") continue;
                 const std::string name = osgDB::getNameLessExtension(file);
-                if (find(slot.name, name)) continue;  // an override of a registered one
+                if (find(slot.name, name) || used.count(slot.name + "/" + file)) continue;  // an override of a registered one
                 const ShaderFunction* base = find(slot.name, "null");
                 ShaderFunction f;
                 f.slot = slot.name;
