@@ -18,6 +18,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <sstream>
 #include <tuple>
 
 namespace volren::app {
@@ -122,29 +123,52 @@ SweepOptions parseSweepOptions(const std::vector<std::string>& args)
     return o;
 }
 
-/// Indices into `space` this run takes: the pairwise cover or all, every N-th of them for shard
-/// I/N (so each shard mixes all kinds of composition).
-std::vector<std::size_t> selection(const PermutationSpace& space, const SweepOptions& o)
+/// The indices into the space this run takes: the pairwise cover or all, only those choosing the
+/// --where implementations, every N-th of them for shard I/N (so each shard mixes all kinds of
+/// composition). Without a cover or --where, nothing is listed: index k is computed.
+class Selection
 {
-    std::vector<std::size_t> indices;
-    if (o.pairwise) indices = space.pairwiseCover();
-    else
-        for (std::size_t i = 0; i < space.size(); ++i) indices.push_back(i);
-    if (!o.where.empty()) {  // only the compositions that choose every --where implementation
-        std::vector<std::size_t> chosen;
-        for (std::size_t i : indices) {
-            const Composition c = space.at(i);
-            bool all = true;
-            for (const auto& [slot, name] : o.where) all = all && c.functionFor(slot) == name;
-            if (all) chosen.push_back(i);
+public:
+    Selection(const PermutationSpace& space, const SweepOptions& o) : _shard(o.shard), _shards(o.shards)
+    {
+        _all = !o.pairwise && o.where.empty();
+        if (_all) {
+            _listed = space.size();
+            return;
         }
-        indices = std::move(chosen);
+        std::vector<std::size_t> indices;
+        if (o.pairwise) indices = space.pairwiseCover();
+        auto chooses = [&](std::size_t i) {
+            const Composition c = space.at(i);
+            for (const auto& [slot, name] : o.where)
+                if (c.functionFor(slot) != name) return false;
+            return true;
+        };
+        if (o.pairwise)
+            std::erase_if(indices, [&](std::size_t i) { return !chooses(i); });
+        else
+            for (std::size_t i = 0; i < space.size(); ++i)
+                if (chooses(i)) indices.push_back(i);
+        _listed = indices.size();
+        _indices = std::move(indices);
     }
-    if (o.shards <= 1) return indices;
-    std::vector<std::size_t> mine;
-    for (std::size_t i = o.shard; i < indices.size(); i += o.shards) mine.push_back(indices[i]);
-    return mine;
-}
+    /// How many the run takes before --first and --count.
+    std::size_t size() const { return _listed > _shard ? (_listed - _shard + _shards - 1) / _shards : 0; }
+    /// The space index of the k-th.
+    std::size_t at(std::size_t k) const
+    {
+        const std::size_t i = _shard + k * _shards;
+        return _all ? i : _indices[i];
+    }
+    /// How many the cover or --where listed (the space's size when neither).
+    std::size_t listed() const { return _listed; }
+
+private:
+    std::size_t _shard, _shards;
+    bool _all = true;
+    std::size_t _listed = 0;
+    std::vector<std::size_t> _indices;
+};
 
 /// Composes, compiles and links `composition` without drawing; returns what went wrong, if anything.
 std::string compileOnly(const Composition& composition, OffscreenRenderer& renderer, std::vector<double>& ms)
@@ -179,25 +203,61 @@ std::string compileOnly(const Composition& composition, OffscreenRenderer& rende
 
 /// Draws `composition` (composed, compiled, linked at draw by llvmpipe) and checks the frame
 /// (SweepHarness.h; with `check` off only a compile or link error fails it); `without` is the
-/// scene's frame without its volume.
+/// scene's frame without its volume. A composition that passes is drawn again (the same image)
+/// and against its metamorphic variants (variantsOf).
 std::vector<SweepFailure> renderOne(const Composition& composition, std::size_t index, VolumeScene& scene,
-                                    OffscreenRenderer& renderer, const osg::Image& without, const SweepOptions& o,
-                                    std::vector<double>& ms)
+                                    const CompositionPolicy& policy, OffscreenRenderer& renderer, const osg::Image& without,
+                                    const SweepOptions& o, std::vector<double>& ms, std::map<std::string, std::size_t>& checked)
 {
-    scene.forcedComposition = composition;
-    const auto start = std::chrono::steady_clock::now();
-    FrameTiming timing;
-    std::string thrown;
-    try {
-        timing = renderer.renderFrame();
-    } catch (const std::exception& e) {
-        thrown = e.what();
+    // One frame of `c`: its checks' failures, and a copy of the image.
+    auto frame = [&](const Composition& c, bool timed) {
+        scene.forcedComposition = c;
+        const auto start = std::chrono::steady_clock::now();
+        FrameTiming timing;
+        std::string thrown;
+        try {
+            timing = renderer.renderFrame();
+        } catch (const std::exception& e) {
+            thrown = e.what();
+        }
+        const double elapsed = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        if (timed) ms.push_back(elapsed);
+        timing.cpuMs = elapsed;
+        std::vector<SweepFailure> failures;
+        if (!o.check) {
+            if (!thrown.empty()) failures.push_back({"link", thrown});
+        } else {
+            failures = checkFrame(c, timing, thrown, *renderer.image(), without, o.limits);
+        }
+        return std::make_pair(failures, osg::ref_ptr<osg::Image>(new osg::Image(*renderer.image(), osg::CopyOp::DEEP_COPY_ALL)));
+    };
+    auto [failures, image] = frame(composition, true);
+    if (!o.dumpDir.empty()) dumpComposition(o.dumpDir, index, scene, reinterpret_cast<const float*>(image->data()));
+    if (!o.check || !failures.empty()) return failures;
+    // Compares `a` with `b` for `check`, within `tolerance`.
+    auto compare = [&failures, &checked](const std::string& check, const osg::Image& a, const osg::Image& b, double tolerance,
+                                         const std::string& against) {
+        ++checked[check];
+        const double d = largestDifference(a, b);
+        if (d > tolerance) {
+            std::ostringstream detail;
+            detail << "largest difference " << d << " > " << tolerance << " against " << against;
+            failures.push_back({check, detail.str()});
+        }
+    };
+    compare("repeat", *image, *frame(composition, false).second, 0.0, "the same composition drawn again");
+    auto& settings = static_cast<VolumeNode*>(scene.getChild(0))->settings;
+    const double termination = settings.earlyTerminationThreshold;
+    for (const Variant& v : variantsOf(composition, policy)) {
+        if (v.withoutEarlyTermination) settings.earlyTerminationThreshold = 1.0;
+        const osg::ref_ptr<osg::Image> original = v.withoutEarlyTermination ? frame(composition, false).second : image;
+        auto [variantFailures, variant] = frame(v.composition, false);
+        settings.earlyTerminationThreshold = termination;
+        for (const SweepFailure& f : variantFailures)
+            failures.push_back({v.check, "its variant " + v.composition.key() + " failed " + f.check + ": " + f.detail});
+        if (variantFailures.empty()) compare(v.check, *original, *variant, v.tolerance, v.composition.key());
     }
-    ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-    timing.cpuMs = ms.back();
-    if (!o.dumpDir.empty()) dumpComposition(o.dumpDir, index, scene, reinterpret_cast<const float*>(renderer.image()->data()));
-    if (!o.check) return thrown.empty() ? std::vector<SweepFailure>{} : std::vector<SweepFailure>{{"link", thrown}};
-    return checkFrame(composition, timing, thrown, *renderer.image(), without, o.limits);
+    return failures;
 }
 
 }  // namespace
@@ -206,14 +266,14 @@ int permutationsCommand(const std::vector<std::string>& args)
 {
     const SweepOptions o = parseSweepOptions(args);
     const PermutationSpace space(ShaderFunctionRegistry::instance(), o.maxInstances, o.maxLights);
-    const std::vector<std::size_t> indices = selection(space, o);
+    const Selection indices(space, o);
     const std::size_t first = o.first;
     const std::size_t end = std::min(indices.size(), o.count == std::size_t(-1) ? indices.size() : first + o.count);
     std::cout << "volren permutations: " << space.size() << " valid compositions (instances <= " << o.maxInstances
               << ", lights <= " << o.maxLights << ")" << (o.pairwise ? ", pairwise cover of " : ", selected ")
               << indices.size() << "; this run: " << (end > first ? end - first : 0) << std::endl;
     if (o.list)
-        for (std::size_t i = first; i < end; ++i) std::cout << space.at(indices[i]).key() << "\n";
+        for (std::size_t i = first; i < end; ++i) std::cout << space.at(indices.at(i)).key() << "\n";
     if (!o.compile) return 0;
     if (!o.dumpDir.empty() && !osgDB::makeDirectory(o.dumpDir)) throw std::runtime_error(o.dumpDir + ": cannot make folder");
 
@@ -236,12 +296,14 @@ int permutationsCommand(const std::vector<std::string>& args)
     nlohmann::json resident = nlohmann::json::array();  // resident memory every memoryEvery compositions
     nlohmann::json failed = nlohmann::json::array();
     std::map<std::string, std::size_t> failedChecks;  // check -> compositions failing it
+    std::map<std::string, std::size_t> checked;       // comparison check -> compositions compared
     std::size_t failedCompositions = 0;
     for (std::size_t i = first; i < end; ++i) {
-        const Composition composition = space.at(indices[i]);
+        const Composition composition = space.at(indices.at(i));
         std::vector<SweepFailure> failures;
         try {
-            if (o.render) failures = renderOne(composition, indices[i], *scene, renderer, *without, o, ms);
+            if (o.render)
+                failures = renderOne(composition, indices.at(i), *scene, space.policy(), renderer, *without, o, ms, checked);
             else if (std::string problem = compileOnly(composition, renderer, ms); !problem.empty())
                 failures.push_back({"link", problem});
         } catch (const std::exception& e) {
@@ -263,10 +325,15 @@ int permutationsCommand(const std::vector<std::string>& args)
     }
     std::cout << (o.render ? "rendered " : "compiled ") << ms.size() << ", failures " << failedCompositions << ", median "
               << (o.render ? "frame incl. compile" : "compile+link") << " " << median(ms) << " ms" << std::endl;
+    if (!checked.empty()) {
+        std::cout << "compared:";
+        for (const auto& [check, n] : checked) std::cout << " " << check << " " << n;
+        std::cout << std::endl;
+    }
     if (!o.statsFile.empty()) {
         nlohmann::json stats = {{"valid_compositions", space.size()}, {"tested", ms.size()},
                                 {"failures", failedCompositions}, {"failed", failed}, {"failed_checks", failedChecks},
-                                {"checked", o.render && o.check}, {"median_ms", median(ms)},
+                                {"checked", o.render && o.check}, {"compared", checked}, {"median_ms", median(ms)},
                                 {"mode", o.render ? "render" : "compile"}, {"pairwise", o.pairwise},
                                 {"max_instances", o.maxInstances}, {"max_lights", o.maxLights},
                                 {"shard", o.shard}, {"shards", o.shards},

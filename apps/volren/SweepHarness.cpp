@@ -75,6 +75,42 @@ bool showsVolume(const Composition& composition)
     return traversal && traversal->traits.sharesRayAs == "emission_absorption";
 }
 
+std::vector<Variant> variantsOf(const Composition& composition, const CompositionPolicy& policy)
+{
+    const ShaderFunctionRegistry& registry = ShaderFunctionRegistry::instance();
+    std::vector<Variant> variants;
+    auto add = [&](const std::string& check, const std::string& slot, const std::string& name, double tolerance,
+                   bool withoutTermination) {
+        Composition v = composition;
+        v.choice[slot] = name;
+        if (policy.isValid(v)) variants.push_back({check, v, tolerance, withoutTermination});
+    };
+    const auto chosen = [&](const char* slot) { return registry.find(slot, composition.functionFor(slot)); };
+    if (const ShaderFunction* a = chosen("Acceleration"); a && !a->traits.skips.empty() && !a->traits.approximates)
+        add("acceleration", "Acceleration", "null", 0.0, false);
+    if (const ShaderFunction* storage = chosen("VolumeStorage"); storage && storage->name != "null")
+        for (const std::string& other : registry.names("VolumeStorage"))
+            if (other != storage->name && other != "null") add("storage", "VolumeStorage", other, 1e-4, false);
+    if (const ShaderFunction* t = chosen("RayTraversal"); t && t->traits.sharesRayAs == "emission_absorption")
+        for (const std::string& other : registry.names("RayTraversal")) {
+            const ShaderFunction* o = registry.find("RayTraversal", other);
+            if (other != t->name && o->traits.sharesRayAs == t->traits.sharesRayAs) add("traversal", "RayTraversal", other, 1e-4, true);
+        }
+    return variants;
+}
+
+double largestDifference(const osg::Image& a, const osg::Image& b)
+{
+    const auto* pa = reinterpret_cast<const float*>(a.data());
+    const auto* pb = reinterpret_cast<const float*>(b.data());
+    double worst = 0.0;
+    for (std::size_t k = 0, n = std::size_t(a.s()) * std::size_t(a.t()) * 4; k < n; ++k) {
+        const double d = std::abs(double(pa[k]) - double(pb[k]));
+        worst = std::isfinite(d) ? std::max(worst, d) : HUGE_VAL;
+    }
+    return worst;
+}
+
 namespace {
 
 std::string joined(const std::vector<std::string>& messages)

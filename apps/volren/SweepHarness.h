@@ -2,6 +2,7 @@
 // What `volren permutations --render` draws each composition into, and the checks a drawn
 // composition must pass: the harness of the composition sweep.
 #include <volume_renderer/Composition.h>
+#include <volume_renderer/CompositionPolicy.h>
 #include <volume_renderer/OffscreenRenderer.h>
 #include <volume_renderer/VolumeScene.h>
 
@@ -29,6 +30,27 @@ struct SweepLimits
 {
     double frameMs = 30000.0;  ///< the longest a frame (compile and link included) may take
 };
+
+/// A composition that must draw the same image as another, within `tolerance` (largest absolute
+/// difference of any RGBA value).
+struct Variant
+{
+    std::string check;     ///< "acceleration", "storage", "traversal"
+    Composition composition;
+    double tolerance = 0.0;
+    bool withoutEarlyTermination = false;  ///< both drawn with early termination off
+};
+
+/// The metamorphic variants of `composition` (valid under `policy`), read from the registry's
+/// declarations, not names: an exact skipping Acceleration (traits.skips, not approximates)
+/// against none (bit-identical); every other real VolumeStorage (within 1e-4); every other
+/// traversal that shares a ray as the same kind of emission-absorption (front-to-back against
+/// back-to-front, early termination off, within 1e-4).
+std::vector<Variant> variantsOf(const Composition& composition, const CompositionPolicy& policy);
+
+/// The largest absolute difference of two RGBA float frames of one size (infinite where a value
+/// is not finite in one of them).
+double largestDifference(const osg::Image& a, const osg::Image& b);
 
 /// Whether the sweep scene surely shows something of the volume under `composition`: where its
 /// traversal composites emission-absorption (the TF, and the null classification's grey ramp,

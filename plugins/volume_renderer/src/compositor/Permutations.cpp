@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <functional>
+#include <iterator>
+#include <limits>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -81,12 +83,14 @@ PermutationSpace::PermutationSpace(const ShaderFunctionRegistry& registry, unsig
     _factors.push_back(lights);
 
     // Only compositions in which every slot nothing calls is null can be valid, so instead of
-    // checking the whole cross product (hundreds of millions of candidates), the slots are
-    // decided in the order the calls reach them: a reached slot takes each of its values in turn
-    // (adding what they call), and once no undecided slot is reached the rest are null. Every
-    // candidate is then checked by the policy, and the valid ones are sorted into the cross
+    // checking the whole cross product (billions of candidates), the slots are decided in the
+    // order the calls reach them: a reached slot takes each of its values in turn (adding what
+    // they call), and once no undecided slot is reached the rest are null. Every candidate is
+    // then checked by the policy, and the valid ones are kept as their ranks in the cross
     // product's order (the first factor fastest), so an index names the same composition as an
-    // odometer over all factors would.
+    // odometer over all factors would. The root of the search is the RaySetup (nothing else is
+    // reached before it): per RaySetup value the ranks are collected by light count, sorted and
+    // compressed into a segment, so only one RaySetup's ranks are ever held uncompressed.
     const std::size_t slotCount = functions.size();
     std::vector<std::vector<std::uint32_t>> calls(slotCount);  // per factor value: the slots it calls
     std::vector<int> nullValue(slotCount, -1);                   // the value that is no implementation
@@ -101,8 +105,17 @@ PermutationSpace::PermutationSpace(const ShaderFunctionRegistry& registry, unsig
             if (none) nullValue[i] = int(v);
         }
     if (slotCount > 32) throw std::logic_error("PermutationSpace: more slots than a mask holds");
+    std::uint64_t product = 1;  // of the factors' sizes: the ranks' range
+    for (const Factor& f : _factors) {
+        if (f.values.empty() || product > std::numeric_limits<std::uint64_t>::max() / f.values.size())
+            throw std::logic_error("PermutationSpace: the cross product outgrows 64-bit ranks");
+        product *= f.values.size();
+    }
+    std::vector<std::uint64_t> weight(_factors.size(), 1);  // rank = sum of value index * weight
+    for (std::size_t i = 1; i < _factors.size(); ++i) weight[i] = weight[i - 1] * _factors[i - 1].values.size();
     std::vector<std::uint8_t> choice(_factors.size(), 0);
     SlotFunctions chosen(slotCount);
+    std::vector<std::vector<std::uint64_t>> byLights(_factors.back().values.size());  // one RaySetup's ranks
     const std::size_t setup = std::size_t(std::find_if(slots().begin(), slots().end(), [](const SlotInfo& s) {
                                                            return s.name == "RaySetup";
                                                        }) -
@@ -123,15 +136,60 @@ PermutationSpace::PermutationSpace(const ShaderFunctionRegistry& registry, unsig
                 choice[i] = std::uint8_t(nullValue[i]);
             }
         for (std::size_t i = 0; i < slotCount; ++i) chosen[i] = functions[i][choice[i]];
-        for (std::size_t n = 0; n < _factors.back().values.size(); ++n) {
-            choice.back() = std::uint8_t(n);
-            if (_policy.isValid(chosen, unsigned(n))) _valid.push_back(choice);
-        }
+        std::uint64_t rank = 0;
+        for (std::size_t i = 0; i < slotCount; ++i) rank += choice[i] * weight[i];
+        for (std::size_t n = 0; n < _factors.back().values.size(); ++n)
+            if (_policy.isValid(chosen, unsigned(n))) byLights[n].push_back(rank + n * weight.back());
     };
-    decide(0, std::uint32_t(1) << setup);
-    std::sort(_valid.begin(), _valid.end(), [](const std::vector<std::uint8_t>& a, const std::vector<std::uint8_t>& b) {
-        return std::lexicographical_compare(a.rbegin(), a.rend(), b.rbegin(), b.rend());
-    });
+    // Segments in index order: light count first (the most significant factor), then RaySetup.
+    std::vector<std::vector<Segment>> segments(byLights.size());
+    for (std::size_t v = 0; v < functions[setup].size(); ++v) {
+        choice[setup] = std::uint8_t(v);
+        decide(std::uint32_t(1) << setup, std::uint32_t(1) << setup | calls[setup][v]);
+        for (std::size_t n = 0; n < byLights.size(); ++n) {
+            std::vector<std::uint64_t>& ranks = byLights[n];
+            std::sort(ranks.begin(), ranks.end());
+            Segment& segment = segments[n].emplace_back();
+            segment.offsets.reserve(ranks.size());
+            for (std::size_t k = 0; k < ranks.size(); ++k) {
+                // A new block every 4096 compositions, or where the offset would not fit 32 bits.
+                if (segment.blocks.empty() || k - segment.blocks.back().first >= 4096 ||
+                    ranks[k] - segment.blocks.back().base > std::numeric_limits<std::uint32_t>::max())
+                    segment.blocks.push_back({k, ranks[k]});
+                segment.offsets.push_back(std::uint32_t(ranks[k] - segment.blocks.back().base));
+            }
+            std::vector<std::uint64_t>().swap(ranks);
+        }
+    }
+    for (std::vector<Segment>& lights : segments)
+        for (Segment& segment : lights) {
+            if (segment.offsets.empty()) continue;
+            segment.first = _size;
+            _size += segment.offsets.size();
+            _segments.push_back(std::move(segment));
+        }
+}
+
+std::uint64_t PermutationSpace::rank(std::size_t index) const
+{
+    if (index >= _size) throw std::out_of_range("PermutationSpace: index " + std::to_string(index) + " of " + std::to_string(_size));
+    auto s = std::upper_bound(_segments.begin(), _segments.end(), index,
+                              [](std::size_t i, const Segment& segment) { return i < segment.first; });
+    const Segment& segment = *std::prev(s);
+    const std::size_t local = index - segment.first;
+    auto b = std::upper_bound(segment.blocks.begin(), segment.blocks.end(), local,
+                              [](std::size_t i, const Block& block) { return i < block.first; });
+    return std::prev(b)->base + segment.offsets[local];
+}
+
+std::vector<std::uint8_t> PermutationSpace::choiceOf(std::uint64_t rank) const
+{
+    std::vector<std::uint8_t> choice(_factors.size());
+    for (std::size_t i = 0; i < _factors.size(); ++i) {
+        choice[i] = std::uint8_t(rank % _factors[i].values.size());
+        rank /= _factors[i].values.size();
+    }
+    return choice;
 }
 
 Composition PermutationSpace::compose(const std::vector<std::uint8_t>& choice) const
@@ -149,7 +207,7 @@ Composition PermutationSpace::compose(const std::vector<std::uint8_t>& choice) c
 
 Composition PermutationSpace::at(std::size_t index) const
 {
-    return compose(_valid.at(index));
+    return compose(choiceOf(rank(index)));
 }
 
 std::vector<std::size_t> PermutationSpace::pairwiseCover() const
@@ -167,40 +225,50 @@ std::vector<std::size_t> PermutationSpace::pairwiseCover() const
     };
     constexpr std::size_t none = ~std::size_t(0);
     std::vector<std::size_t> witness(values * values, none);
-    for (std::size_t k = 0; k < _valid.size(); ++k)
-        for (std::size_t i = 0; i < n; ++i)
-            for (std::size_t j = i + 1; j < n; ++j) {
-                std::size_t& w = witness[pairIndex(i, _valid[k][i], j, _valid[k][j])];
-                if (w == none) w = k;
+    for (const Segment& segment : _segments)  // every composition in index order, decoded in turn
+        for (std::size_t b = 0; b < segment.blocks.size(); ++b) {
+            const std::size_t end = b + 1 < segment.blocks.size() ? segment.blocks[b + 1].first : segment.offsets.size();
+            for (std::size_t local = segment.blocks[b].first; local < end; ++local) {
+                const std::vector<std::uint8_t> v = choiceOf(segment.blocks[b].base + segment.offsets[local]);
+                const std::size_t k = segment.first + local;
+                for (std::size_t i = 0; i < n; ++i)
+                    for (std::size_t j = i + 1; j < n; ++j) {
+                        std::size_t& w = witness[pairIndex(i, v[i], j, v[j])];
+                        if (w == none) w = k;
+                    }
             }
+        }
     std::vector<std::size_t> candidates;
     std::size_t remaining = 0;
     for (std::size_t w : witness)
         if (w != none) candidates.push_back(w), ++remaining;
-    const std::size_t stride = std::max<std::size_t>(1, _valid.size() / 100000);
-    for (std::size_t k = 0; k < _valid.size(); k += stride) candidates.push_back(k);
+    const std::size_t stride = std::max<std::size_t>(1, _size / 100000);
+    for (std::size_t k = 0; k < _size; k += stride) candidates.push_back(k);
     std::sort(candidates.begin(), candidates.end());
     candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+    std::vector<std::vector<std::uint8_t>> decoded;  // the candidates' choices
+    decoded.reserve(candidates.size());
+    for (std::size_t k : candidates) decoded.push_back(choiceOf(rank(k)));
 
     std::vector<char> covered(values * values, 0);
     std::vector<std::size_t> chosen;
     while (remaining > 0) {
         std::size_t best = 0, bestGain = 0;
-        for (std::size_t k : candidates) {
-            const auto& v = _valid[k];
+        for (std::size_t c = 0; c < candidates.size(); ++c) {
+            const auto& v = decoded[c];
             std::size_t gain = 0;
             for (std::size_t i = 0; i < n; ++i)
                 for (std::size_t j = i + 1; j < n; ++j) gain += !covered[pairIndex(i, v[i], j, v[j])];
-            if (gain > bestGain) bestGain = gain, best = k;
+            if (gain > bestGain) bestGain = gain, best = c;
         }
         if (bestGain == 0) break;
-        const auto& v = _valid[best];
+        const auto& v = decoded[best];
         for (std::size_t i = 0; i < n; ++i)
             for (std::size_t j = i + 1; j < n; ++j) {
                 char& c = covered[pairIndex(i, v[i], j, v[j])];
                 if (!c) c = 1, --remaining;
             }
-        chosen.push_back(best);
+        chosen.push_back(candidates[best]);
     }
     return chosen;
 }
