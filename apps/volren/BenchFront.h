@@ -11,9 +11,11 @@ namespace volren::app {
 /// lighting model): volren rows no other such row matches or beats on both time and RMSE.
 void markPareto(std::vector<BenchRow>& rows);
 
-/// Marks the rows that beat the "default" row of their dataset, size and picture on both axes by
-/// more than the run's noise: faster by more than twice the two rows' frame-time deviations (and
-/// 2 % of the default's time), and an RMSE lower by more than 5 %. Returns them.
+/// Marks the rows that beat the "default" row of their dataset, size and picture: better on one
+/// axis beyond the run's noise and not worse beyond it on the other. Time: faster by more than
+/// twice the two rows' frame-time deviations (and 2 % of the default's time), not slower when
+/// within that margin. Error: an RMSE lower by more than 5 %, as accurate when within 1 %.
+/// Returns them.
 std::vector<const BenchRow*> markRowsBeatingTheDefault(std::vector<BenchRow>& rows);
 
 }  // namespace volren::app
