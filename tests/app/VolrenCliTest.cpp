@@ -453,6 +453,40 @@ TEST(VolrenCli, AFileOpenedLazilyRendersItsFullResolutionFromBricksReadOnDemand)
     EXPECT_NE(info.output.find("opened lazily: 96 x 80 x 64 voxels in the file"), std::string::npos) << info.output;
 }
 
+TEST(VolrenCli, TheDefaultViewDrawsOnePictureFromNanometreToHugeSpacings)
+{
+    // A float soft ball at spacings 1e-9 to 1e12, framed by the default camera: the same picture.
+    // The default projection's planes were fixed at 0.01 and 1e6, and OSG's near/far rescaling
+    // of that projection lost everything to rounding at spacing 1e12 (a black image).
+    const std::string dir = tempDirectory();
+    auto write = [&dir](const std::string& name, double spacing) {
+        std::ofstream out(dir + "/" + name, std::ios::binary);
+        out << "NRRD0004\ntype: float\ndimension: 3\nsizes: 16 16 16\nspacings: " << spacing << " " << spacing << " " << spacing
+            << "\nencoding: raw\nendian: little\n\n";
+        for (int z = 0; z < 16; ++z)
+            for (int y = 0; y < 16; ++y)
+                for (int x = 0; x < 16; ++x) {
+                    const float v = float(std::max(0.0, 1.0 - std::hypot(x - 7.5, y - 7.5, z - 7.5) / 8.0));
+                    out.write(reinterpret_cast<const char*>(&v), sizeof(v));
+                }
+    };
+    write("unit.nrrd", 1.0);
+    ASSERT_EQ(volren("render '" + dir + "/unit.nrrd' -o '" + dir + "/unit.exr' --size 48x48").exitCode, 0);
+    const Image unit = readImage(dir + "/unit.exr");
+    float covered = 0.0f;
+    for (std::size_t i = 3; i < unit.pixels.size(); i += 4) covered += unit.pixels[i] > 0.05f;
+    ASSERT_GT(covered, 300.0f);
+    for (double spacing : {1e-9, 1e8, 1e12}) {
+        write("scaled.nrrd", spacing);
+        ASSERT_EQ(volren("render '" + dir + "/scaled.nrrd' -o '" + dir + "/scaled.exr' --size 48x48").exitCode, 0);
+        const Image scaled = readImage(dir + "/scaled.exr");
+        ASSERT_EQ(scaled.pixels.size(), unit.pixels.size());
+        float worst = 0.0f;
+        for (std::size_t i = 0; i < unit.pixels.size(); ++i) worst = std::max(worst, std::abs(unit.pixels[i] - scaled.pixels[i]));
+        EXPECT_LT(worst, 2e-3f) << "spacing " << spacing;
+    }
+}
+
 TEST(VolrenCli, InfoPrintsGeometryAndValues)
 {
     VOLREN_REQUIRE_SHARED_DATA();

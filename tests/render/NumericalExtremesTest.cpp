@@ -294,5 +294,43 @@ TEST_F(NumericalExtremes, OneByOneAndHugeViewports)
     renderer(16, 16);  // let go of the 4096 x 4096 framebuffer
 }
 
+/// A soft float ball of 16^3 voxels at `spacing` (every axis), drawn at 24 x 24 from a view
+/// scaled with it: the same picture at every scale.
+Pixels ballAtScale(double spacing)
+{
+    osg::ref_ptr<Volume> volume = new Volume;
+    volume->allocate(VoxelType::Float32, {16, 16, 16});
+    auto* v = reinterpret_cast<float*>(volume->data());
+    for (int z = 0; z < 16; ++z)
+        for (int y = 0; y < 16; ++y)
+            for (int x = 0; x < 16; ++x)
+                v[x + 16 * (y + 16 * z)] = float(std::max(0.0, 1.0 - std::hypot(x - 7.5, y - 7.5, z - 7.5) / 8.0));
+    volume->setSpacing({spacing, spacing, spacing});
+    volume->dirty();
+    osg::ref_ptr<VolumeNode> node =
+        makeVolumeNode(volume.get(), transferFunction({{0.0, osg::Vec4(0, 0, 0, 0)}, {1.0, osg::Vec4(1, 0.7f, 0.4f, 0.6f)}}, 0.0, 1.0).get());
+    const osg::Vec3d eye = osg::Vec3d(20, -30, 15) * spacing;
+    const double distance = eye.length(), radius = 14.0 * spacing;
+    return RenderFixture::render(node.get(), 24, 24, osg::Matrixd::lookAt(eye, osg::Vec3d(), osg::Vec3d(0, 0, 1)),
+                                 osg::Matrixd::perspective(30.0, 1.0, distance - radius, distance + radius));
+}
+
+TEST_F(NumericalExtremes, SpacingFromNanometresToTenTimesTheEarthsOrbitDrawsOnePicture)
+{
+    // The ray's matrices come from the box's scale and the camera's: inverting their product in
+    // float overflowed once the box spanned ~1e9 units (spacing 3e7 here), and the image was black.
+    const Pixels unit = ballAtScale(1.0);
+    double covered = 0.0;
+    for (const osg::Vec4& p : unit.rgba) covered += p.a() > 0.05;
+    ASSERT_GT(covered, 100.0);
+    for (double spacing : {1e-9, 1e-3, 1e3, 1e7, 1e8, 1e10, 1e11, 1e12}) {
+        const Pixels scaled = ballAtScale(spacing);
+        double worst = 0.0;
+        for (std::size_t i = 0; i < unit.rgba.size(); ++i)
+            for (int c = 0; c < 4; ++c) worst = std::max(worst, double(std::abs(unit.rgba[i][c] - scaled.rgba[i][c])));
+        EXPECT_LT(worst, 2e-3) << "spacing " << spacing;
+    }
+}
+
 }  // namespace
 }  // namespace volren::test

@@ -116,13 +116,20 @@ osg::BoundingBoxd boxOrUnit(const osg::Node& scene)
     return box;
 }
 
-osg::Matrixd projectionFor(const CameraRequest& request, double aspect, double orthoHeight)
+/// The projection, its near and far planes around the scene's depth range [nearest, farthest]
+/// from the eye (OSG narrows them to what is drawn each frame by rescaling this projection's
+/// depth: planes fixed at 0.01 and 1e6 lost that rescaling to double rounding once the scene lay
+/// ~1e13 units away, and nothing was drawn).
+osg::Matrixd projectionFor(const CameraRequest& request, double aspect, double orthoHeight, double nearest, double farthest)
 {
+    const double extent = std::max(farthest - nearest, 1e-300);
     if (request.orthographic) {
         const double h = orthoHeight * 0.5;
-        return osg::Matrixd::ortho(-h * aspect, h * aspect, -h, h, 0.01, 1e6);
+        return osg::Matrixd::ortho(-h * aspect, h * aspect, -h, h, nearest - extent, farthest + extent);
     }
-    return osg::Matrixd::perspective(request.fov.value_or(30.0), aspect, 0.01, 1e6);
+    const double zFar = std::max(farthest + extent, extent);
+    const double zNear = nearest > 0.0 ? 0.5 * nearest : zFar * 1e-6;  // the eye inside the box
+    return osg::Matrixd::perspective(request.fov.value_or(30.0), aspect, zNear, zFar);
 }
 
 /// Tangents of the half-angles the box may fill, margin taken off.
@@ -183,7 +190,15 @@ CameraView frameScene(const osg::Node& scene, const CameraRequest& request, doub
         eye = target - b.forward * fit.z();
     }
     view.view = osg::Matrixd::lookAt(eye, target, b.up);
-    view.projection = projectionFor(request, aspect, orthoHeight);
+    osg::Vec3d forward = target - eye;
+    forward.normalize();
+    double nearest = 1e300, farthest = -1e300;  // the box's depth range from the eye
+    for (unsigned int i = 0; i < 8; ++i) {
+        const double d = (box.corner(i) - eye) * forward;
+        nearest = std::min(nearest, d);
+        farthest = std::max(farthest, d);
+    }
+    view.projection = projectionFor(request, aspect, orthoHeight, nearest, farthest);
     return view;
 }
 
@@ -221,10 +236,13 @@ std::vector<CameraView> turntableViews(const osg::Node& scene, const CameraReque
     }
     if (request.orthographic && !request.eye) distance = 2.0 * (box._max - box._min).length() + orthoHeight;
 
+    // One projection for all: the depth range of the box's bounding sphere from the eye.
+    const double radius = 0.5 * (box._max - box._min).length() + (box.center() - centre).length();
+    const osg::Matrixd projection = projectionFor(request, aspect, orthoHeight, distance - radius, distance + radius);
     std::vector<CameraView> views;
     for (const osg::Vec3d& d : directions) {
         const Basis b = basis(-d, up);
-        views.push_back({osg::Matrixd::lookAt(centre + d * distance, centre, b.up), projectionFor(request, aspect, orthoHeight)});
+        views.push_back({osg::Matrixd::lookAt(centre + d * distance, centre, b.up), projection});
     }
     return views;
 }
