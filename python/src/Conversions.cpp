@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <vector>
 
 namespace py = pybind11;
@@ -19,9 +20,9 @@ VoxelType voxelTypeOf(const py::dtype& dtype)
     if (kind == 'i' && size == 1) return VoxelType::Int8;
     if (kind == 'u' && size == 2) return VoxelType::UInt16;
     if (kind == 'i' && size == 2) return VoxelType::Int16;
-    if (kind == 'f' && size == 4) return VoxelType::Float32;
+    if (kind == 'f' && (size == 4 || size == 8)) return VoxelType::Float32;  // float64: narrowed, as NIfTI and Zarr files are
     throw py::type_error("volume: dtype " + dtype.attr("name").cast<std::string>() +
-                         " is not supported; use uint8, int8, uint16, int16 or float32 (e.g. array.astype(numpy.float32))");
+                         " is not supported; use uint8, int8, uint16, int16, float32 or float64 (e.g. array.astype(numpy.float32))");
 }
 
 }  // namespace
@@ -34,6 +35,18 @@ osg::ref_ptr<Volume> volumeFromArray(const py::handle& given, const osg::Vec3d& 
     if (array.ndim() != 3)
         throw py::value_error("volume: expected a 3-D array indexed [z, y, x], got " + std::to_string(array.ndim()) +
                               " dimension" + (array.ndim() == 1 ? "" : "s"));
+    if (array.dtype().kind() == 'f' && array.dtype().itemsize() == 8) {
+        // numpy's default float64, stored as float32 (volren's float storage): rounded to float32's
+        // 24-bit mantissa; a finite value beyond float32's range is refused, not made infinite.
+        const py::object finite = py::reinterpret_borrow<py::object>(array)[numpy.attr("isfinite")(array)];
+        if (py::len(finite) > 0) {
+            const double largest = numpy.attr("abs")(finite).attr("max")().cast<double>();
+            if (largest > double(std::numeric_limits<float>::max()))
+                throw py::value_error("volume: a float64 value of magnitude " + reprOf(py::float_(largest)) +
+                                      " is beyond float32's range (3.4e38), in which volren stores float voxels");
+        }
+        array = numpy.attr("asarray")(array, py::arg("dtype") = numpy.attr("float32"));
+    }
     // C order in the machine's byte order: voxel (x, y, z) at x + nx * (y + ny * z), as Volume stores it.
     py::object native = array.dtype().attr("newbyteorder")("=");
     array = numpy.attr("ascontiguousarray")(array, py::arg("dtype") = native);

@@ -123,8 +123,9 @@ Conventions:
           py::arg("background") = py::make_tuple(0.0, 0.0, 0.0), py::arg("samples") = 1, py::arg("tf_keep_range") = false,
           ("Renders one volume as `volren render VOLUMEFILE` renders a file: the volume centred at the\n"
            "origin, a transfer function from its histogram (unless tf), one headlight.\n\n"
-           "volume: a numpy array indexed [z, y, x] (3-D; uint8, int8, uint16, int16 or float32, else\n"
-           "    TypeError; NaN voxels render as empty; any strides), or a volren.Volume (from load()).\n"
+           "volume: a numpy array indexed [z, y, x] (3-D; uint8, int8, uint16, int16, float32, or float64\n"
+           "    stored as float32 (ValueError beyond its range), else TypeError; NaN voxels render as empty;\n"
+           "    any strides), or a volren.Volume (from load()).\n"
            "spacing: voxel size along (x, y, z) for an array (default (1, 1, 1)); a Volume has its own.\n" +
            tfDoc + commonDoc + settingsDoc + "\n" + imageDoc + "\n" + cameraDoc)
               .c_str());

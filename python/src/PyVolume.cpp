@@ -55,9 +55,10 @@ Axis order: numpy arrays are indexed [z, y, x] (C order, x fastest, as files sto
              py::arg("array"), py::arg("spacing") = py::make_tuple(1.0, 1.0, 1.0),
              R"doc(A volume holding a copy of `array`, indexed [z, y, x].
 
-array: a 3-D numpy array (or anything numpy.asarray takes) of dtype uint8, int8, uint16, int16 or
-    float32; other dtypes raise TypeError (convert with array.astype(numpy.float32)), other
-    dimensions ValueError. NaN voxels are allowed (rendered as empty).
+array: a 3-D numpy array (or anything numpy.asarray takes) of dtype uint8, int8, uint16, int16,
+    float32 or float64 (stored as float32, rounded; a finite value beyond float32's range raises
+    ValueError); other dtypes raise TypeError, other dimensions ValueError. NaN voxels are
+    allowed (rendered as empty).
 spacing: world size of a voxel along (x, y, z), positive.)doc")
         .def_property_readonly(
             "array", [](const py::object& self) { return blockView(*self.cast<PyVolume&>().volume, 0, 0, self); },

@@ -296,9 +296,23 @@ class Errors(CliTestCase):
             volren.render(numpy.ones((4, 4, 4), numpy.uint8), tf=self.path("missing.tf"), size=SIZE)
         self.assertIn("missing.tf", str(caught.exception))
 
+    def test_float64_arrays_are_stored_as_float32(self):
+        # numpy's default dtype: the same picture as the float32 array, and refused beyond float32's range.
+        z, y, x = numpy.mgrid[0:12, 0:12, 0:12]
+        ball = numpy.clip(1.0 - numpy.sqrt((x - 5.5) ** 2 + (y - 5.5) ** 2 + (z - 5.5) ** 2) / 6.0, 0.0, 1.0)
+        self.assertEqual(ball.dtype, numpy.float64)
+        ball[0, 0, 0] = numpy.nan
+        wide, narrow = volren.render(ball, size=SIZE), volren.render(ball.astype(numpy.float32), size=SIZE)
+        self.assertGreater(float(narrow[..., 3].max()), 0.1)
+        numpy.testing.assert_array_equal(wide, narrow)
+        self.assertEqual(volren.Volume(ball).dtype, numpy.float32)
+        ball[1, 1, 1] = 1e39
+        with self.assertRaisesRegex(ValueError, "float32's range"):
+            volren.render(ball, size=SIZE)
+
     def test_bad_arrays(self):
-        with self.assertRaisesRegex(TypeError, "float64"):
-            volren.render(numpy.zeros((4, 4, 4)), size=SIZE)
+        with self.assertRaisesRegex(TypeError, "float16"):
+            volren.render(numpy.zeros((4, 4, 4), numpy.float16), size=SIZE)
         with self.assertRaisesRegex(TypeError, "bool"):
             volren.render(numpy.zeros((4, 4, 4), bool), size=SIZE)
         with self.assertRaisesRegex(ValueError, "3-D"):
