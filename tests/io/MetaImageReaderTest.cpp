@@ -136,10 +136,19 @@ TEST(MetaImageReader, ZeroNegativeAndOverflowingSizesAreRejected)
     expectRejected("count.mha", "NDims = 3\nDimSize = 1 1\n" + rest, "DimSize '1 1' must list 3 sizes");
 }
 
-TEST(MetaImageReader, UnknownElementTypeIsRejected)
+TEST(MetaImageReader, UnknownElementTypeIsRejectedAndDoubleIsReadAsFloat)
 {
-    expectRejected("double.mha", "NDims = 3\nDimSize = 1 1 1\nElementType = MET_DOUBLE\nElementDataFile = LOCAL\n12345678",
-                   "ElementType 'MET_DOUBLE' is not supported");
+    expectRejected("long.mha", "NDims = 3\nDimSize = 1 1 1\nElementType = MET_LONG_LONG\nElementDataFile = LOCAL\n12345678",
+                   "ElementType 'MET_LONG_LONG' is not supported");
+    const double value = 0.1;
+    std::string bytes(8, '\0');
+    std::memcpy(bytes.data(), &value, 8);
+    const std::string dir = tempDirectory();
+    writeFile(dir + "/double.mha", "NDims = 3\nDimSize = 1 1 1\nElementType = MET_DOUBLE\nElementDataFile = LOCAL\n" + bytes);
+    osg::ref_ptr<Volume> v = readVolumeFile(dir + "/double.mha");
+    ASSERT_TRUE(v);
+    EXPECT_EQ(v->type(), VoxelType::Float32);
+    EXPECT_EQ(v->value(std::size_t(0)), double(0.1f));
 }
 
 TEST(MetaImageReader, CorruptZlibStreamIsRejected)

@@ -167,7 +167,7 @@ TEST(RawReader, UnknownTypeOrEncodingIsRejected)
 {
     const std::string dir = tempDirectory();
     writeFile(dir + "/v.raw", floatRamp(24));
-    expectRejected(dir + "/v.raw", opts("dims=2,3,4 type=float64").get(), "unknown voxel type 'float64'");
+    expectRejected(dir + "/v.raw", opts("dims=2,3,4 type=complex64").get(), "unknown voxel type 'complex64'");
     expectRejected(dir + "/v.raw", opts("dims=2,3,4 type=float32 encoding=lzma").get(), "unknown encoding 'lzma'");
 }
 

@@ -32,7 +32,7 @@ bool parseElementType(std::string name, FileVoxelType& type)
     static const struct { const char* name; FileVoxelType type; } names[] = {
         {"MET_UCHAR", FileVoxelType::UInt8}, {"MET_CHAR", FileVoxelType::Int8},    {"MET_USHORT", FileVoxelType::UInt16},
         {"MET_SHORT", FileVoxelType::Int16}, {"MET_INT", FileVoxelType::Int32},    {"MET_UINT", FileVoxelType::UInt32},
-        {"MET_FLOAT", FileVoxelType::Float32},
+        {"MET_FLOAT", FileVoxelType::Float32}, {"MET_DOUBLE", FileVoxelType::Float64},
     };
     for (const auto& n : names)
         if (name == n.name) {
@@ -106,7 +106,7 @@ PayloadLayout describeMetaImageFile(const std::string& path)
     }
     if (!parseElementType(fields["elementtype"], layout.type))
         throw bad("ElementType '" + fields["elementtype"] +
-                  "' is not supported (MET_UCHAR, MET_CHAR, MET_USHORT, MET_SHORT, MET_FLOAT; MET_INT/MET_UINT as exact float32)");
+                  "' is not supported (MET_UCHAR, MET_CHAR, MET_USHORT, MET_SHORT, MET_FLOAT; MET_INT/MET_UINT as exact float32, MET_DOUBLE as float32)");
     for (const char* key : {"binarydatabyteordermsb", "elementbyteordermsb"})
         if (fields.count(key) && !parseBool(fields[key], layout.bigEndian))
             throw bad(std::string(key) + " '" + fields[key] + "' must be True or False");

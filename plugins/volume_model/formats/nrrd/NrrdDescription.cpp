@@ -30,6 +30,7 @@ bool parseNrrdType(const std::string& name, FileVoxelType& type)
         {"int", FileVoxelType::Int32},            {"signed int", FileVoxelType::Int32}, {"int32", FileVoxelType::Int32},
         {"int32_t", FileVoxelType::Int32},        {"uint", FileVoxelType::UInt32},      {"unsigned int", FileVoxelType::UInt32},
         {"uint32", FileVoxelType::UInt32},        {"uint32_t", FileVoxelType::UInt32},  {"float", FileVoxelType::Float32},
+        {"double", FileVoxelType::Float64},
     };
     for (const auto& n : names)
         if (name == n.name) {
@@ -135,8 +136,7 @@ PayloadLayout describeNrrdFile(const std::string& path)
     layout.name = path;
     if (!parseNrrdType(fields["type"], layout.type)) {
         const std::string t = fields["type"];
-        throw bad("unsupported type '" + t + "' (volren reads signed/unsigned char, short, int as float32, and float" +
-                  (t == "double" ? "; double would lose precision in volren's float32 storage)" : ")"));
+        throw bad("unsupported type '" + t + "' (volren reads signed/unsigned char, short, int as float32, float, and double as float32)");
     }
 
     long long dimension = 0;

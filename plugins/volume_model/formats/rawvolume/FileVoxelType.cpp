@@ -8,6 +8,7 @@ std::size_t fileVoxelSize(FileVoxelType type)
     case FileVoxelType::UInt8: case FileVoxelType::Int8: return 1;
     case FileVoxelType::UInt16: case FileVoxelType::Int16: return 2;
     case FileVoxelType::Int32: case FileVoxelType::UInt32: case FileVoxelType::Float32: return 4;
+    case FileVoxelType::Float64: return 8;
     }
     return 1;
 }
@@ -33,6 +34,7 @@ const char* fileVoxelTypeName(FileVoxelType type)
     case FileVoxelType::Int32: return "int32";
     case FileVoxelType::UInt32: return "uint32";
     case FileVoxelType::Float32: return "float32";
+    case FileVoxelType::Float64: return "float64";
     }
     return "?";
 }
@@ -44,7 +46,8 @@ bool parseFileVoxelType(const std::string& name, FileVoxelType& type)
         {"char", FileVoxelType::Int8},     {"uint16", FileVoxelType::UInt16}, {"ushort", FileVoxelType::UInt16},
         {"int16", FileVoxelType::Int16},   {"short", FileVoxelType::Int16},   {"int32", FileVoxelType::Int32},
         {"int", FileVoxelType::Int32},     {"uint32", FileVoxelType::UInt32}, {"uint", FileVoxelType::UInt32},
-        {"float32", FileVoxelType::Float32}, {"float", FileVoxelType::Float32},
+        {"float32", FileVoxelType::Float32}, {"float", FileVoxelType::Float32}, {"float64", FileVoxelType::Float64},
+        {"double", FileVoxelType::Float64},
     };
     for (const auto& n : names)
         if (name == n.name) {

@@ -8,6 +8,8 @@
 #include <bit>
 #include <cmath>
 #include <cstring>
+#include <limits>
+#include <vector>
 #include <stdexcept>
 
 namespace volren::rawvolume {
@@ -31,6 +33,23 @@ void integersToFloat(std::uint8_t* data, std::size_t count, const std::string& n
     }
 }
 
+/// Float64 -> float32 (half the width): rounded to float32's 24-bit mantissa; refuses a finite
+/// value beyond float32's range (it would become infinite). NaN and infinities stay as they are.
+std::vector<std::uint8_t> doublesToFloat(const std::vector<std::uint8_t>& data, std::size_t count, const std::string& name)
+{
+    std::vector<std::uint8_t> out(count * 4);
+    for (std::size_t i = 0; i < count; ++i) {
+        double v;
+        std::memcpy(&v, data.data() + 8 * i, 8);
+        if (std::isfinite(v) && std::fabs(v) > double(std::numeric_limits<float>::max()))
+            throw std::runtime_error(name + ": float64 value " + std::to_string(v) + " at voxel " + std::to_string(i) +
+                                     " is beyond float32's range (3.4e38), in which volren stores float voxels");
+        const float f = float(v);
+        std::memcpy(out.data() + 4 * i, &f, 4);
+    }
+    return out;
+}
+
 /// Voxel bytes of the layout's payload (0 when the dims or counts are not positive or overflow).
 std::uint64_t payloadBytes(const PayloadLayout& layout)
 {
@@ -49,7 +68,7 @@ std::string notLazyBecause(const PayloadLayout& layout)
     if (layout.parts.size() != 1) return "its voxels are split over " + std::to_string(layout.parts.size()) + " data files";
     if (layout.parts.front().compression != Compression::None) return "its voxels are compressed";
     if (layout.channels != 1 || layout.frames != 1) return "it has several channels or time points";
-    if (layout.type == FileVoxelType::Int32 || layout.type == FileVoxelType::UInt32)
+    if (layout.type == FileVoxelType::Int32 || layout.type == FileVoxelType::UInt32 || layout.type == FileVoxelType::Float64)
         return std::string(fileVoxelTypeName(layout.type)) + " voxels are converted to float32 when read whole";
     return {};
 }
@@ -120,7 +139,7 @@ osg::ref_ptr<Volume> readPayloadVolume(const PayloadLayout& layout, const osgDB:
     } catch (const std::exception& e) {
         throw std::runtime_error(name + ": " + e.what());
     }
-    const std::size_t width = fileVoxelSize(layout.type);
+    std::size_t width = fileVoxelSize(layout.type);
     const std::uint64_t bytes = count * width;
 
     checkPayloadFits(layout.parts, bytes, name);
@@ -134,6 +153,10 @@ osg::ref_ptr<Volume> readPayloadVolume(const PayloadLayout& layout, const osgDB:
     if (layout.bigEndian != (std::endian::native == std::endian::big)) swapBytes(voxels.data(), std::size_t(count), width);
     if (layout.type == FileVoxelType::Int32) integersToFloat<std::int32_t>(voxels.data(), std::size_t(count), name, "int32");
     if (layout.type == FileVoxelType::UInt32) integersToFloat<std::uint32_t>(voxels.data(), std::size_t(count), name, "uint32");
+    if (layout.type == FileVoxelType::Float64) {
+        voxels = doublesToFloat(voxels, std::size_t(count), name);
+        width = 4;
+    }
 
     if (layout.channels > 1) {
         // The file interleaves channels per voxel; the Volume keeps one block per channel.
@@ -157,7 +180,9 @@ osg::ref_ptr<Volume> readPayloadVolume(const PayloadLayout& layout, const osgDB:
     volume->setName(name);
     if (layout.type == FileVoxelType::Int32 || layout.type == FileVoxelType::UInt32)
         OSG_NOTICE << name << ": " << fileVoxelTypeName(layout.type) << " voxels stored as float32 (all values exact)" << std::endl;
-    if (layout.type == FileVoxelType::Float32)
+    if (layout.type == FileVoxelType::Float64)
+        OSG_NOTICE << name << ": float64 voxels stored as float32 (rounded to 24 significant bits)" << std::endl;
+    if (layout.type == FileVoxelType::Float32 || layout.type == FileVoxelType::Float64)
         if (const auto bad = volume->nonFiniteCount())
             OSG_WARN << name << ": " << bad << " NaN/Inf voxels; they are treated as empty" << std::endl;
     return volume;

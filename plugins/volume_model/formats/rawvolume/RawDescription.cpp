@@ -72,7 +72,7 @@ PayloadLayout describeRawFile(const std::string& path, const std::string& option
         layout.dims[a] = int(v);
     }
     if (!parseFileVoxelType(lowerCase(keys["type"]), layout.type))
-        throw bad("unknown voxel type '" + keys["type"] + "' (uint8, int8, uint16, int16, int32, uint32, float32)");
+        throw bad("unknown voxel type '" + keys["type"] + "' (uint8, int8, uint16, int16, int32, uint32, float32, float64)");
     if (keys.count("endian")) {
         const std::string e = lowerCase(keys["endian"]);
         if (e != "little" && e != "big") throw bad("endian '" + keys["endian"] + "' must be little or big");
