@@ -21,6 +21,9 @@ struct Binding
     int instance = -1;   ///< k, or -1 for ordinary slots
     int member = -1;     ///< multi-volume sets: the member it belongs to, -1 for the set's own
     std::string memberSuffix;  ///< "_v<member>", or "" for the set's own (and single volumes)
+    /// The kinds of auxiliary data `function` needs, resolved once when the program is composed
+    /// (composing throws for a kind no one declared), so binding and drawing look none up.
+    std::vector<const AuxKind*> kinds = {};
 };
 
 /// The compute program that builds a volume's auxiliary data (ShaderFunction::buildFile).
@@ -44,8 +47,6 @@ struct ComposedProgram
     /// The compute programs of the implementations with a `buildFile`, by member (-1: a single
     /// volume's own; k: member k of a set); each shares the ray caster's uniform and sampler names.
     std::map<int, BuildProgram> builds;
-    /// Whether an implementation of this program needs auxiliary data of kind `kind`.
-    bool needs(const std::string& kind) const;
     /// The build program of `member` (-1: a single volume), or null when it has none.
     const BuildProgram* build(int member) const;
 };

@@ -190,8 +190,6 @@ struct ShaderFunction
     {
         return std::find(traits.required.begin(), traits.required.end(), slot) != traits.required.end();
     }
-    /// Whether it needs auxiliary data `aux`.
-    bool needsAux(const std::string& kind) const { return std::find(needs.begin(), needs.end(), kind) != needs.end(); }
 };
 
 }  // namespace volren

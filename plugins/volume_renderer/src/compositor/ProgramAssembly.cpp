@@ -43,7 +43,7 @@ void ProgramAssembly::pick(const Composition& c, int member)
         if (s.isTemplate) {
             const std::vector<std::string>& names = c.instancesOf(s.name);
             for (std::size_t k = 0; k < names.size(); ++k)
-                _result.bindings.push_back({lookup(s.name, names[k]), "_" + std::to_string(k), int(k), member, memberSuffix});
+                add({lookup(s.name, names[k]), "_" + std::to_string(k), int(k), member, memberSuffix});
             continue;
         }
         const ShaderFunction* f = lookup(s.name, c.functionFor(s.name));
@@ -51,12 +51,18 @@ void ProgramAssembly::pick(const Composition& c, int member)
             throw std::runtime_error("slot RayTraversal: '" + f->name + "' " +
                                      (f->traits.multiVolume ? "only marches a multi-volume set"
                                                             : "cannot march a multi-volume set"));
-        _result.bindings.push_back({f, "", -1, member, memberSuffix});
+        add({f, "", -1, member, memberSuffix});
         if (member >= 0) continue;
         if (s.name == "RaySetup") _raySetup = f;
         if (s.name == "RayTraversal") _result.writesDepth = f->traits.writesDepth;
     }
-    if (member >= 0) _result.bindings.push_back({lookup("MultiVolume", "member"), "", -1, member, memberSuffix});
+    if (member >= 0) add({lookup("MultiVolume", "member"), "", -1, member, memberSuffix});
+}
+
+void ProgramAssembly::add(Binding binding)
+{
+    binding.kinds = _registry.auxKindsOf(*binding.function);
+    _result.bindings.push_back(std::move(binding));
 }
 
 std::string ProgramAssembly::declarations() const

@@ -28,6 +28,8 @@ private:
     using Sources = std::vector<std::pair<std::string, std::string>>;  ///< (name, text) in order
     const ShaderFunction* lookup(const std::string& slot, const std::string& name) const;
     void pick(const Composition& c, int member);
+    /// Appends `binding` with the kinds of auxiliary data its implementation needs.
+    void add(Binding binding);
     std::string declarations() const;
     std::string header() const;
     void append(const std::string& name, const std::string& text);

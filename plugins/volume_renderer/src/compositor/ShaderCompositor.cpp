@@ -31,13 +31,6 @@ void checkComposition(const Composition& composition)
 
 }  // namespace
 
-bool ComposedProgram::needs(const std::string& kind) const
-{
-    for (const Binding& b : bindings)
-        if (b.function->needsAux(kind)) return true;
-    return false;
-}
-
 const BuildProgram* ComposedProgram::build(int member) const
 {
     auto it = builds.find(member);

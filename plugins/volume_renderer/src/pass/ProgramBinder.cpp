@@ -3,7 +3,6 @@
 #include "../compositor/BuildSlots.h"
 
 #include <volume_renderer/SampleDistance.h>
-#include <volume_renderer/ShaderFunctionRegistry.h>
 #include <volume_renderer/VolumeMipChain.h>
 
 #include <algorithm>
@@ -30,7 +29,7 @@ BindContext bindContextFor(const VolumeCandidate& candidate, osg::StateSet& stat
     context.geometryShadowMatrices = candidate.geometryShadowMatrices;
     if (candidate.geometryShadowMap)  // the pass drew the opaque geometry from the lights for it
         for (const Binding& b : program.bindings)
-            for (const AuxKind* kind : ShaderFunctionRegistry::instance().auxKindsOf(*b.function))
+            for (const AuxKind* kind : b.kinds)
                 if (kind->scope == AuxScope::GeometryFromLights) context.aux[kind->name] = candidate.geometryShadowMap;
     return context;
 }
@@ -48,7 +47,7 @@ std::string builtVolumeKey(const BindContext& context, const std::vector<const B
 {
     std::set<std::string> read = buildSamplingSlots();
     for (const Binding* b : bindings)
-        if (b->function->needsAux(kind.name)) read.insert(b->function->slot);
+        if (std::find(b->kinds.begin(), b->kinds.end(), &kind) != b->kinds.end()) read.insert(b->function->slot);
     const AuxBuild& build = *kind.build;
     std::string key;
     key.reserve(256);
@@ -98,10 +97,9 @@ bool bindProgram(BindContext& context, const ComposedProgram& program,
     for (const Binding& b : program.bindings)
         if (b.member == member) mine.push_back(&b);
     // The kinds of auxiliary data they need, once each, in the order the kinds ask for.
-    const ShaderFunctionRegistry& registry = ShaderFunctionRegistry::instance();
     std::vector<const AuxKind*> kinds;
     for (const Binding* b : mine)
-        for (const AuxKind* kind : registry.auxKindsOf(*b->function))
+        for (const AuxKind* kind : b->kinds)
             if (kind->scope == AuxScope::Volume && std::find(kinds.begin(), kinds.end(), kind) == kinds.end())
                 kinds.push_back(kind);
     std::stable_sort(kinds.begin(), kinds.end(), [](const AuxKind* a, const AuxKind* b) { return a->order < b->order; });

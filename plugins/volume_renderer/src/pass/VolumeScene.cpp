@@ -70,7 +70,7 @@ void VolumeScene::Pass::draw(osgUtil::CullVisitor& cv, VolumeProxy& proxy, const
     // The per-camera auxiliary data its program needs, each kind once.
     std::vector<const AuxKind*> perCamera;
     for (const Binding& b : proxy.program->bindings)
-        for (const AuxKind* kind : ShaderFunctionRegistry::instance().auxKindsOf(*b.function))
+        for (const AuxKind* kind : b.kinds)
             if (kind->scope == AuxScope::Camera && std::find(perCamera.begin(), perCamera.end(), kind) == perCamera.end())
                 perCamera.push_back(kind);
     int pushed = 0;
