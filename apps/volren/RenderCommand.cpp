@@ -54,6 +54,10 @@ int renderCommand(const std::vector<std::string>& args, bool defaultRun)
             }
     };
     for (int i = 0; i < options.frames; ++i) frames.push_back(renderer.renderFrame());
+    // A volume the pass could not draw (its composition or data refused) fails the command: an
+    // image without it would be a silent wrong picture.
+    for (const FrameTiming& f : frames)
+        if (!f.drawErrors.empty()) throw std::runtime_error(f.drawErrors.front());
     converge();
     const double streamMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - streamStart).count();
     WrittenFrames written;

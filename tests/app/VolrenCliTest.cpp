@@ -487,6 +487,29 @@ TEST(VolrenCli, TheDefaultViewDrawsOnePictureFromNanometreToHugeSpacings)
     }
 }
 
+TEST(VolrenCli, OneTextureBeyondTheLargest3DTextureIsRefusedNotShrunk)
+{
+    // 4096 voxels along x exceed llvmpipe's largest 3D texture (2048). The policy draws such a
+    // volume from bricks; forced into one texture, OSG used to shrink it silently (a wrong
+    // picture, RMSE 0.026 against the bricks, exit 0). Now the command fails naming the file.
+    const std::string dir = tempDirectory();
+    {
+        std::ofstream out(dir + "/wide.nrrd", std::ios::binary);
+        out << "NRRD0004\ntype: float\ndimension: 3\nsizes: 4096 4 4\nspacings: 0.01 1 1\nencoding: raw\nendian: little\n\n";
+        for (int i = 0; i < 4096 * 16; ++i) {
+            const float v = float((i * 7919) % 101) / 100.0f;
+            out.write(reinterpret_cast<const char*>(&v), sizeof(v));
+        }
+    }
+    const CliRun forced = volren("render '" + dir + "/wide.nrrd' -o '" + dir + "/texture.exr' --size 32x32 --set volumeStorage=texture");
+    EXPECT_EQ(forced.exitCode, 1) << forced.output;
+    EXPECT_NE(forced.output.find("wide.nrrd"), std::string::npos) << forced.output;
+    EXPECT_NE(forced.output.find("is 4096x4x4 texels at level 0, beyond this driver's largest 3D texture"), std::string::npos)
+        << forced.output;
+    const CliRun chosen = volren("render '" + dir + "/wide.nrrd' -o '" + dir + "/bricked.exr' --size 32x32");
+    EXPECT_EQ(chosen.exitCode, 0) << chosen.output;
+}
+
 TEST(VolrenCli, InfoPrintsGeometryAndValues)
 {
     VOLREN_REQUIRE_SHARED_DATA();

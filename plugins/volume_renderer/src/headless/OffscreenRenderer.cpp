@@ -139,6 +139,9 @@ OffscreenRenderer::OffscreenRenderer(int width, int height, int samples) : _samp
     attachBuffers();
     cam->setClearColor(osg::Vec4(0.0f, 0.0f, 0.0f, 0.0f));
     cam->setProjectionMatrixAsPerspective(30.0, double(width) / height, 0.1, 1000.0);
+    // No small-feature culling: in a 1x1 image a volume filling the view projects to one pixel,
+    // below OSG's threshold, and was culled (nothing drawn).
+    cam->setCullingMode(cam->getCullingMode() & ~osg::CullSettings::SMALL_FEATURE_CULLING);
 
     _timer = new GpuTimer;
     cam->setInitialDrawCallback(new GpuTimer::Begin(_timer.get()));

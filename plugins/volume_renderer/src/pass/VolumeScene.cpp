@@ -317,7 +317,7 @@ void VolumeScene::checkPrograms(osg::State& state) const
         for (const auto& [member, build] : proxy->program->builds) programs.emplace_back(build.program.get(), &build.sourceNames);
         for (const auto& [program, names] : programs) {
             osg::Program::PerContextProgram* pcp = program ? program->getPCP(state) : nullptr;
-            if (!pcp || pcp->isLinked()) continue;
+            if (!pcp || pcp->needsLink() || pcp->isLinked()) continue;  // never linked: not applied (culled later)
             std::string log = "volren: shader program " + program->getName() + " for '" + proxy->key + "' failed:\n";
             for (unsigned int i = 0; i < program->getNumShaders(); ++i) {
                 std::string shaderLog;
