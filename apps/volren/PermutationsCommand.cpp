@@ -18,6 +18,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <sstream>
 #include <tuple>
 
@@ -25,15 +26,33 @@ namespace volren::app {
 
 namespace {
 
-/// Writes composition `index`'s key and composed fragment source (INDEX.frag) and its 8x8 RGBA
-/// float image (INDEX.rgba, raw) into `dir`: two runs' folders compare with `diff -r`.
-void dumpComposition(const std::string& dir, std::size_t index, const VolumeScene& scene, const float* pixels)
+/// The composition that came closest to its bound against the reference.
+struct Closest
+{
+    double ratio = 0.0, difference = 0.0, bound = 0.0;
+    std::string key;
+    nlohmann::json all = nlohmann::json::array();  ///< every comparison: key, difference, bound
+};
+
+/// The folder of --dump DIR for scene variant `scene`: DIR itself for the plain sweep scene,
+/// DIR/<scene> for a variant (made when missing).
+std::string dumpFolder(const std::string& dumpDir, const std::string& scene)
+{
+    const std::string dir = scene.empty() ? dumpDir : osgDB::concatPaths(dumpDir, scene);
+    if (!osgDB::makeDirectory(dir)) throw std::runtime_error(dir + ": cannot make folder");
+    return dir;
+}
+
+/// Writes composition `index`'s key and composed fragment source (INDEX.frag) and its RGBA float
+/// image (INDEX.rgba, raw; the reference's, where compared, as INDEX.reference.rgba) into `dir`:
+/// two runs' folders compare with `diff -r`.
+void dumpComposition(const std::string& dir, std::size_t index, const VolumeScene& scene, const osg::Image& pixels)
 {
     const std::string base = osgDB::concatPaths(dir, std::to_string(index));
     std::ofstream source(base + ".frag", std::ios::binary);
     for (const auto& [name, program] : scene.programs()) source << "// key: " << program->key << "\n" << program->fragmentSource;
     std::ofstream image(base + ".rgba", std::ios::binary);
-    image.write(reinterpret_cast<const char*>(pixels), 8 * 8 * 4 * sizeof(float));
+    image.write(reinterpret_cast<const char*>(pixels.data()), std::streamsize(pixels.getTotalSizeInBytes()));
     if (!source || !image) throw std::runtime_error(base + ": cannot write the dump");
 }
 
@@ -62,6 +81,9 @@ double median(std::vector<double> v)
 struct SweepOptions
 {
     bool list = false, compile = false, render = false, pairwise = false, check = true;
+    bool modelled = false;  ///< only compositions whose every implementation has a reference model
+    bool extremes = false;  ///< every composition also on the sweep scene's parameter extremes
+    std::string sceneName;  ///< the scene variant being drawn (empty: the plain sweep scene)
     SweepLimits limits;
     unsigned int maxInstances = 1, maxLights = 1;
     std::size_t first = 0, count = std::size_t(-1), shard = 0, shards = 1;
@@ -100,6 +122,8 @@ SweepOptions parseSweepOptions(const std::vector<std::string>& args)
         else if (args[i] == "--compile") o.compile = true;
         else if (args[i] == "--render") o.render = o.compile = true;
         else if (args[i] == "--pairwise") o.pairwise = true;
+        else if (args[i] == "--modelled") o.modelled = true;
+        else if (args[i] == "--extremes") o.extremes = true;
         else if (args[i] == "--max-instances") o.maxInstances = unsigned(number(i, "--max-instances"));
         else if (args[i] == "--max-lights") o.maxLights = unsigned(number(i, "--max-lights"));
         else if (args[i] == "--first") o.first = number(i, "--first");
@@ -131,15 +155,27 @@ class Selection
 public:
     Selection(const PermutationSpace& space, const SweepOptions& o) : _shard(o.shard), _shards(o.shards)
     {
-        _all = !o.pairwise && o.where.empty();
+        _all = !o.pairwise && o.where.empty() && !o.modelled;
         if (_all) {
             _listed = space.size();
             return;
         }
         std::vector<std::size_t> indices;
-        if (o.pairwise) indices = space.pairwiseCover();
+        // The pairwise cover of the compositions choosing the --where implementations (and, with
+        // --modelled, only modelled ones): every pair of values these may take, covered.
+        auto allowed = [&o](const std::string& factor, const std::string& value) {
+            if (o.modelled && !modelledValue(factor, value)) return false;
+            for (const auto& [slot, name] : o.where)
+                if (slot == factor && value != name && value.find("[" + name + "]") == std::string::npos &&
+                    value.find("[" + name + ",") == std::string::npos && value.find("," + name + "]") == std::string::npos &&
+                    value.find("," + name + ",") == std::string::npos)
+                    return false;
+            return true;
+        };
+        if (o.pairwise) indices = space.pairwiseCover(allowed);
         auto chooses = [&](std::size_t i) {
             const Composition c = space.at(i);
+            if (o.modelled && !oracleBound(c).modelled) return false;
             for (const auto& [slot, name] : o.where)
                 if (c.functionFor(slot) != name) return false;
             return true;
@@ -203,11 +239,15 @@ std::string compileOnly(const Composition& composition, OffscreenRenderer& rende
 
 /// Draws `composition` (composed, compiled, linked at draw by llvmpipe) and checks the frame
 /// (SweepHarness.h; with `check` off only a compile or link error fails it); `without` is the
-/// scene's frame without its volume. A composition that passes is drawn again (the same image)
-/// and against its metamorphic variants (variantsOf).
+/// scene's frame without its volume. A composition that passes is drawn again (the same image),
+/// against its metamorphic variants (variantsOf), and against the CPU reference where every
+/// implementation it chooses declares a model (oracleBound; the others counted in `unmodelled`
+/// by the first implementation without one).
 std::vector<SweepFailure> renderOne(const Composition& composition, std::size_t index, VolumeScene& scene,
                                     const CompositionPolicy& policy, OffscreenRenderer& renderer, const osg::Image& without,
-                                    const SweepOptions& o, std::vector<double>& ms, std::map<std::string, std::size_t>& checked)
+                                    SweepOracle& oracle, const SweepOptions& o, std::vector<double>& ms,
+                                    std::map<std::string, std::size_t>& checked,
+                                    std::map<std::string, std::size_t>& unmodelled, Closest& closest)
 {
     // One frame of `c`: its checks' failures, and a copy of the image.
     auto frame = [&](const Composition& c, bool timed) {
@@ -232,7 +272,7 @@ std::vector<SweepFailure> renderOne(const Composition& composition, std::size_t 
         return std::make_pair(failures, osg::ref_ptr<osg::Image>(new osg::Image(*renderer.image(), osg::CopyOp::DEEP_COPY_ALL)));
     };
     auto [failures, image] = frame(composition, true);
-    if (!o.dumpDir.empty()) dumpComposition(o.dumpDir, index, scene, reinterpret_cast<const float*>(image->data()));
+    if (!o.dumpDir.empty()) dumpComposition(dumpFolder(o.dumpDir, o.sceneName), index, scene, *image);
     if (!o.check || !failures.empty()) return failures;
     // Compares `a` with `b` for `check`, within `tolerance`.
     auto compare = [&failures, &checked](const std::string& check, const osg::Image& a, const osg::Image& b, double tolerance,
@@ -249,6 +289,7 @@ std::vector<SweepFailure> renderOne(const Composition& composition, std::size_t 
     auto& settings = static_cast<VolumeNode*>(scene.getChild(0))->settings;
     const double termination = settings.earlyTerminationThreshold;
     for (const Variant& v : variantsOf(composition, policy)) {
+        if (o.limits.refuses && o.limits.refuses(v.composition)) continue;  // refuses this scene: nothing to compare
         if (v.withoutEarlyTermination) settings.earlyTerminationThreshold = 1.0;
         const osg::ref_ptr<osg::Image> original = v.withoutEarlyTermination ? frame(composition, false).second : image;
         auto [variantFailures, variant] = frame(v.composition, false);
@@ -256,6 +297,29 @@ std::vector<SweepFailure> renderOne(const Composition& composition, std::size_t 
         for (const SweepFailure& f : variantFailures)
             failures.push_back({v.check, "its variant " + v.composition.key() + " failed " + f.check + ": " + f.detail});
         if (variantFailures.empty()) compare(v.check, *original, *variant, v.tolerance, v.composition.key());
+    }
+    const OracleBound bound = oracleBound(composition);
+    if (!bound.modelled) {
+        ++unmodelled[bound.why];
+        return failures;
+    }
+    ++checked["reference"];
+    const ReferenceImage& reference = oracle.image(composition);
+    if (!o.dumpDir.empty()) {  // beside its image: INDEX.reference.rgba, the same layout
+        const std::vector<float> values(reference.rgba.begin(), reference.rgba.end());
+        std::ofstream out(osgDB::concatPaths(dumpFolder(o.dumpDir, o.sceneName), std::to_string(index) + ".reference.rgba"),
+                          std::ios::binary);
+        out.write(reinterpret_cast<const char*>(values.data()), std::streamsize(values.size() * sizeof(float)));
+    }
+    const double d = SweepOracle::largestDifference(*image, reference);
+    const std::string key = composition.key() + (o.sceneName.empty() ? "" : " [scene: " + o.sceneName + "]");
+    if (!(d / bound.bound <= closest.ratio))
+        std::tie(closest.ratio, closest.difference, closest.bound, closest.key) = std::tuple(d / bound.bound, d, bound.bound, key);
+    closest.all.push_back({{"key", composition.key()}, {"scene", o.sceneName}, {"difference", d}, {"bound", bound.bound}});
+    if (!(d <= bound.bound)) {
+        std::ostringstream detail;
+        detail << "largest difference " << d << " > " << bound.bound << " against the CPU reference";
+        failures.push_back({"reference", detail.str()});
     }
     return failures;
 }
@@ -277,50 +341,85 @@ int permutationsCommand(const std::vector<std::string>& args)
     if (!o.compile) return 0;
     if (!o.dumpDir.empty() && !osgDB::makeDirectory(o.dumpDir)) throw std::runtime_error(o.dumpDir + ": cannot make folder");
 
-    OffscreenRenderer renderer(8, 8);
-    osg::ref_ptr<VolumeScene> scene = sweepScene();
-    scene->compositor().setCacheSize(0);  // a sweep never returns to a composition: keep none
-    renderer.setScene(scene.get());
-    renderer.camera()->setViewMatrixAsLookAt(osg::Vec3d(20, -25, 15), osg::Vec3d(), osg::Vec3d(0, 0, 1));
-    renderer.camera()->setProjectionMatrixAsPerspective(40, 1, 1, 100);
-    // The frame without the volume: what "nothing drawn" compares with.
-    osg::ref_ptr<osg::Image> without;
-    if (o.render) {
-        osg::Node* volume = scene->getChild(0);
-        volume->setNodeMask(0);
-        renderer.renderFrame();
-        without = new osg::Image(*renderer.image(), osg::CopyOp::DEEP_COPY_ALL);
-        volume->setNodeMask(~0u);
-    }
     std::vector<double> ms;
     nlohmann::json resident = nlohmann::json::array();  // resident memory every memoryEvery compositions
     nlohmann::json failed = nlohmann::json::array();
     std::map<std::string, std::size_t> failedChecks;  // check -> compositions failing it
     std::map<std::string, std::size_t> checked;       // comparison check -> compositions compared
+    std::map<std::string, std::size_t> unmodelled;    // why not compared with the reference -> compositions
+    Closest closest;
     std::size_t failedCompositions = 0;
-    for (std::size_t i = first; i < end; ++i) {
-        const Composition composition = space.at(indices.at(i));
-        std::vector<SweepFailure> failures;
-        try {
-            if (o.render)
-                failures = renderOne(composition, indices.at(i), *scene, space.policy(), renderer, *without, o, ms, checked);
-            else if (std::string problem = compileOnly(composition, renderer, ms); !problem.empty())
-                failures.push_back({"link", problem});
-        } catch (const std::exception& e) {
-            failures.push_back({"compose", e.what()});
+    std::size_t referenceImages = 0;
+    double referenceSeconds = 0.0;
+    // Each scene variant (only the plain sweep scene unless --extremes) draws every composition.
+    for (const SweepVariant& variant : sweepVariants(o.render && o.extremes)) {
+        OffscreenRenderer renderer(variant.width, variant.height);
+        osg::ref_ptr<VolumeScene> scene = sweepScene();
+        scene->compositor().setCacheSize(0);  // a sweep never returns to a composition: keep none
+        renderer.setScene(scene.get());
+        placeSweepCamera(*renderer.camera());
+        if (variant.apply) variant.apply(*scene, *renderer.camera());
+        // The camera as placed: a frame may fit near and far to what it draws (the frame without
+        // the volume to the geometry alone), and the reference must see the volume whole.
+        const osg::Matrixd view = renderer.camera()->getViewMatrix(), projection = renderer.camera()->getProjectionMatrix();
+        SweepOptions options = o;
+        options.limits.drawn = variant.showsVolume;
+        options.sceneName = variant.name;
+        options.limits.refuses = variant.refuses;
+        // The frame without the volume: what "nothing drawn" compares with.
+        osg::ref_ptr<osg::Image> without;
+        std::unique_ptr<SweepOracle> oracle;
+        if (o.render) {
+            osg::Node* volume = scene->getChild(0);
+            volume->setNodeMask(0);
+            renderer.renderFrame();
+            without = new osg::Image(*renderer.image(), osg::CopyOp::DEEP_COPY_ALL);
+            volume->setNodeMask(~0u);
+            renderer.camera()->setProjectionMatrix(projection);
+            oracle = std::make_unique<SweepOracle>(*scene, view, projection, variant.width, variant.height, osg::Vec3());
         }
-        failedCompositions += !failures.empty();
-        for (const SweepFailure& f : failures) {
-            ++failedChecks[f.check];
-            failed.push_back({{"key", composition.key()}, {"check", f.check}, {"detail", f.detail}});
-            std::string line = f.detail;  // one line per failure: a GLSL log's lines joined
-            for (std::size_t at = 0; (at = line.find('\n', at)) != std::string::npos;) line.replace(at, 1, " | ");
-            std::cout << "FAILED " << composition.key() << ": " << f.check << ": " << line << std::endl;
+        const std::string where = variant.name.empty() ? std::string() : " [scene: " + variant.name + "]";
+        if (!o.dumpDir.empty() && without)  // the scene without its volume, as without.rgba
+            std::ofstream(osgDB::concatPaths(dumpFolder(o.dumpDir, variant.name), "without.rgba"), std::ios::binary)
+                .write(reinterpret_cast<const char*>(without->data()), std::streamsize(without->getTotalSizeInBytes()));
+        for (std::size_t i = first; i < end; ++i) {
+            const Composition composition = space.at(indices.at(i));
+            std::vector<SweepFailure> failures;
+            try {
+                if (o.render)
+                    failures = renderOne(composition, indices.at(i), *scene, space.policy(), renderer, *without, *oracle, options, ms,
+                                         checked, unmodelled, closest);
+                else if (std::string problem = compileOnly(composition, renderer, ms); !problem.empty())
+                    failures.push_back({"link", problem});
+            } catch (const std::exception& e) {
+                failures.push_back({"compose", e.what()});
+            }
+            if (variant.refuses && variant.refuses(composition)) {  // it must fail with the refusal, and only so
+                const bool refused = failures.size() == 1 && failures[0].check == "compose" &&
+                                     failures[0].detail.find(variant.refusal) != std::string::npos;
+                failures = refused ? std::vector<SweepFailure>{}
+                                   : std::vector<SweepFailure>{{"refused", "expected a compose error naming '" + variant.refusal + "'" +
+                                                                              (failures.empty() ? std::string(", drawn instead")
+                                                                                                : ", got " + failures[0].check + ": " + failures[0].detail)}};
+                ++checked["refused"];
+            }
+            failedCompositions += !failures.empty();
+            for (const SweepFailure& f : failures) {
+                ++failedChecks[f.check];
+                failed.push_back({{"key", composition.key()}, {"check", f.check}, {"detail", f.detail + where}});
+                std::string line = f.detail + where;  // one line per failure: a GLSL log's lines joined
+                for (std::size_t at = 0; (at = line.find('\n', at)) != std::string::npos;) line.replace(at, 1, " | ");
+                std::cout << "FAILED " << composition.key() << ": " << f.check << ": " << line << std::endl;
+            }
+            if ((i - first + 1) % memoryEvery == 0) {
+                const double mb = residentMb();
+                resident.push_back({{"done", i - first + 1}, {"resident_mb", mb}});
+                std::cout << "  " << (i - first + 1) << " done, resident " << mb << " MB" << std::endl;
+            }
         }
-        if ((i - first + 1) % memoryEvery == 0) {
-            const double mb = residentMb();
-            resident.push_back({{"done", i - first + 1}, {"resident_mb", mb}});
-            std::cout << "  " << (i - first + 1) << " done, resident " << mb << " MB" << std::endl;
+        if (oracle) {
+            referenceImages += oracle->computed();
+            referenceSeconds += oracle->seconds();
         }
     }
     std::cout << (o.render ? "rendered " : "compiled ") << ms.size() << ", failures " << failedCompositions << ", median "
@@ -330,10 +429,25 @@ int permutationsCommand(const std::vector<std::string>& args)
         for (const auto& [check, n] : checked) std::cout << " " << check << " " << n;
         std::cout << std::endl;
     }
+    if (o.render && o.check) {
+        if (!closest.key.empty())
+            std::cout << "closest to its bound against the reference: " << closest.difference << " of " << closest.bound
+                      << " (" << closest.key << ")" << std::endl;
+        std::cout << "reference images computed " << referenceImages << " in " << referenceSeconds
+                  << " s; not compared with the reference:";
+        std::size_t total = 0;
+        for (const auto& [why, n] : unmodelled) total += n;
+        std::cout << " " << total << std::endl;
+        for (const auto& [why, n] : unmodelled) std::cout << "  " << n << "  " << why << std::endl;
+    }
     if (!o.statsFile.empty()) {
         nlohmann::json stats = {{"valid_compositions", space.size()}, {"tested", ms.size()},
                                 {"failures", failedCompositions}, {"failed", failed}, {"failed_checks", failedChecks},
-                                {"checked", o.render && o.check}, {"compared", checked}, {"median_ms", median(ms)},
+                                {"checked", o.render && o.check}, {"compared", checked}, {"not_compared_with_reference", unmodelled},
+                                {"closest_to_bound", {{"difference", closest.difference}, {"bound", closest.bound},
+                                                      {"key", closest.key}}},
+                                {"reference_seconds", referenceSeconds}, {"extremes", o.render && o.extremes},
+                                {"reference_differences", closest.all}, {"median_ms", median(ms)},
                                 {"mode", o.render ? "render" : "compile"}, {"pairwise", o.pairwise},
                                 {"max_instances", o.maxInstances}, {"max_lights", o.maxLights},
                                 {"shard", o.shard}, {"shards", o.shards},

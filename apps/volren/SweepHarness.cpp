@@ -1,6 +1,9 @@
 #include "SweepHarness.h"
 
 #include <volume_renderer/ShaderFunctionRegistry.h>
+#include <volume_renderer/Slots.h>
+
+#include <volume_model/ReferenceModel.h>
 
 #include <volume_model/ClipBoxNode.h>
 #include <volume_model/ClipEllipsoidNode.h>
@@ -8,30 +11,42 @@
 #include <volume_model/ClipPlaneNode.h>
 
 #include <osg/Geode>
+#include <osg/Viewport>
 #include <osg/LightSource>
 #include <osg/ShapeDrawable>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <cstdint>
+#include <limits>
+#include <set>
 #include <sstream>
 
 namespace volren::app {
 
 osg::ref_ptr<VolumeScene> sweepScene()
 {
+    // A soft ball leaning along x (no axis mirrors its gradients onto another), 12 x 10 x 8
+    // world units in voxels of 0.5, and a TF that gives it a lit shell and a denser core.
     osg::ref_ptr<Volume> volume = new Volume;
-    volume->allocate(VoxelType::Float32, {12, 10, 8});
+    const int nx = 24, ny = 20, nz = 16;
+    volume->allocate(VoxelType::Float32, {nx, ny, nz});
+    volume->setSpacing({0.5, 0.5, 0.5});
     auto* v = reinterpret_cast<float*>(volume->data());
-    for (int z = 0; z < 8; ++z)
-        for (int y = 0; y < 10; ++y)
-            for (int x = 0; x < 12; ++x) {
-                const double dx = (x - 5.5) / 6, dy = (y - 4.5) / 5, dz = (z - 3.5) / 4;
-                v[x + 12 * (y + 10 * z)] = float(std::max(0.0, 1.0 - std::sqrt(dx * dx + dy * dy + dz * dz)));
+    for (int z = 0; z < nz; ++z)
+        for (int y = 0; y < ny; ++y)
+            for (int x = 0; x < nx; ++x) {
+                const double dx = (x - 11.5) / 12, dy = (y - 9.5) / 10, dz = (z - 7.5) / 8;
+                const double ball = std::max(0.0, 1.0 - std::sqrt(dx * dx + dy * dy + dz * dz));
+                v[x + nx * (y + ny * z)] = float(ball * (0.75 + 0.25 * dx) + 0.1 * dy * dz);
             }
     volume->dirty();
     osg::ref_ptr<TransferFunction> tf = new TransferFunction;
     tf->setPoint(0.0, osg::Vec4(0, 0, 0, 0));
-    tf->setPoint(1.0, osg::Vec4(1, 0.8f, 0.6f, 0.5f));
+    tf->setPoint(0.2, osg::Vec4(0.9f, 0.6f, 0.3f, 0.0f));
+    tf->setPoint(0.35, osg::Vec4(1.0f, 0.85f, 0.6f, 0.6f));
+    tf->setPoint(1.0, osg::Vec4(0.6f, 0.8f, 1.0f, 0.3f));
     osg::ref_ptr<VolumeNode> node = new VolumeNode;
     node->setName("sweep");
     node->setVolume(volume.get());
@@ -53,7 +68,7 @@ osg::ref_ptr<VolumeScene> sweepScene()
     scene->addChild(ellipsoid.get());
     osg::ref_ptr<ClipMaskNode> mask = new ClipMaskNode;
     mask->mask = new Volume;
-    mask->mask->allocate(VoxelType::UInt8, {6, 5, 4});
+    mask->mask->allocate(VoxelType::UInt8, {6, 5, 4});  // over the whole box
     mask->mask->setSpacing({2.0, 2.0, 2.0});
     std::fill(mask->mask->data(), mask->mask->data() + 6 * 5 * 4, std::uint8_t(1));
     mask->mask->data()[0] = 0;  // one corner cell cut away
@@ -64,6 +79,134 @@ osg::ref_ptr<VolumeScene> sweepScene()
     geometry->addDrawable(new osg::ShapeDrawable(new osg::Box(osg::Vec3(4.5f, 0.0f, -2.0f), 3.0f, 14.0f, 1.0f)));
     scene->addChild(geometry.get());
     return scene;
+}
+
+void placeSweepCamera(osg::Camera& camera, double scale)
+{
+    camera.setViewMatrixAsLookAt(osg::Vec3d(20, -25, 15) * scale, osg::Vec3d(), osg::Vec3d(0, 0, 1));
+    camera.setProjectionMatrixAsPerspective(40, double(camera.getViewport() ? camera.getViewport()->aspectRatio() : 1.0),
+                                            1.0 * scale, 100.0 * scale);
+}
+
+namespace {
+
+VolumeNode& sweepNode(VolumeScene& scene) { return static_cast<VolumeNode&>(*scene.getChild(0)); }
+
+/// The sweep volume's values stored as `type` (0..1 over the type's range, by the rescale).
+void storeAs(VolumeScene& scene, VoxelType type, double range)
+{
+    const Volume& from = *sweepNode(scene).getVolume();
+    osg::ref_ptr<Volume> to = new Volume;
+    to->allocate(type, from.dims());
+    to->setSpacing(from.spacing());
+    to->setRescale(1.0 / range, 0.0);
+    const auto* v = reinterpret_cast<const float*>(from.data());
+    for (std::size_t i = 0; i < from.voxelCount(); ++i) {
+        const double stored = std::round(std::clamp(double(v[i]), 0.0, 1.0) * range);
+        if (type == VoxelType::UInt8) to->data()[i] = std::uint8_t(stored);
+        else reinterpret_cast<std::uint16_t*>(to->data())[i] = std::uint16_t(stored);
+    }
+    to->dirty();
+    sweepNode(scene).setVolume(to.get());
+}
+
+/// The TF's opacities all set to `alpha`.
+void opacityEverywhere(VolumeScene& scene, float alpha)
+{
+    const TransferFunction& from = *sweepNode(scene).getTransferFunction();
+    osg::ref_ptr<TransferFunction> to = new TransferFunction;
+    for (const auto& [value, rgba] : from.points()) to->setPoint(value, osg::Vec4(rgba.r(), rgba.g(), rgba.b(), alpha));
+    sweepNode(scene).setTransferFunction(to.get());
+}
+
+/// A volume of `dims` over the sweep volume's box, its values the sweep field's shape.
+void resample(VolumeScene& scene, const osg::Vec3i& dims)
+{
+    osg::ref_ptr<Volume> to = new Volume;
+    to->allocate(VoxelType::Float32, dims);
+    to->setSpacing({12.0 / dims.x(), 10.0 / dims.y(), 8.0 / dims.z()});
+    auto* v = reinterpret_cast<float*>(to->data());
+    for (int z = 0; z < dims.z(); ++z)
+        for (int y = 0; y < dims.y(); ++y)
+            for (int x = 0; x < dims.x(); ++x) {
+                const double dx = 2.0 * (x + 0.5) / dims.x() - 1.0, dy = 2.0 * (y + 0.5) / dims.y() - 1.0,
+                             dz = 2.0 * (z + 0.5) / dims.z() - 1.0;
+                v[x + dims.x() * (y + dims.y() * z)] =
+                    float(std::max(0.0, 1.0 - std::sqrt(dx * dx + dy * dy + dz * dz)) * (0.75 + 0.25 * dx) + 0.5 * (dims.x() == 1));
+            }
+    to->dirty();
+    sweepNode(scene).setVolume(to.get());
+}
+
+/// The whole scene (volume spacing, clip shapes, the opaque box, the camera) scaled by `s`.
+void scaleScene(VolumeScene& scene, osg::Camera& camera, double s)
+{
+    Volume& volume = *sweepNode(scene).getVolume();
+    volume.setSpacing(volume.spacing() * s);
+    for (unsigned int i = 0; i < scene.getNumChildren(); ++i) {
+        osg::Node* child = scene.getChild(i);
+        if (auto* plane = dynamic_cast<ClipPlaneNode*>(child)) {
+            plane->plane[3] *= s;
+        } else if (auto* box = dynamic_cast<ClipBoxNode*>(child)) {
+            box->box.set(box->box._min * s, box->box._max * s);
+        } else if (auto* ellipsoid = dynamic_cast<ClipEllipsoidNode*>(child)) {
+            ellipsoid->center *= s;
+            ellipsoid->radii *= s;
+        } else if (auto* mask = dynamic_cast<ClipMaskNode*>(child)) {
+            mask->mask->setSpacing(mask->mask->spacing() * s);
+        } else if (auto* geode = dynamic_cast<osg::Geode*>(child)) {
+            geode->removeDrawables(0, geode->getNumDrawables());
+            geode->addDrawable(new osg::ShapeDrawable(new osg::Box(osg::Vec3(4.5f, 0.0f, -2.0f) * float(s), 3.0f * float(s),
+                                                                   14.0f * float(s), 1.0f * float(s))));
+        }
+    }
+    placeSweepCamera(camera, s);
+}
+
+}  // namespace
+
+std::vector<SweepVariant> sweepVariants(bool extremes)
+{
+    std::vector<SweepVariant> variants = {{}};
+    if (!extremes) return variants;
+    auto add = [&](std::string name, std::function<void(VolumeScene&, osg::Camera&)> apply) {
+        variants.push_back({.name = std::move(name), .apply = std::move(apply)});
+    };
+    add("8-bit data", [](VolumeScene& s, osg::Camera&) { storeAs(s, VoxelType::UInt8, 255.0); });
+    add("16-bit data", [](VolumeScene& s, osg::Camera&) { storeAs(s, VoxelType::UInt16, 65535.0); });
+    add("NaN voxels", [](VolumeScene& s, osg::Camera&) {
+        Volume& volume = *sweepNode(s).getVolume();
+        auto* v = reinterpret_cast<float*>(volume.data());
+        for (std::size_t i = 0; i < volume.voxelCount(); i += 37) v[i] = std::numeric_limits<float>::quiet_NaN();
+        volume.dirty();
+    });
+    variants.push_back({.name = "TF opacity 0", .showsVolume = false,
+                        .apply = [](VolumeScene& s, osg::Camera&) { opacityEverywhere(s, 0.0f); }});
+    add("TF opacity 1", [](VolumeScene& s, osg::Camera&) { opacityEverywhere(s, 1.0f); });
+    add("steps of 1/1000 voxel", [](VolumeScene& s, osg::Camera&) { sweepNode(s).settings.sampleDistanceFactor = 0.001; });
+    add("spacing 1e-9", [](VolumeScene& s, osg::Camera& c) { scaleScene(s, c, 2e-9); });
+    add("spacing 1e12", [](VolumeScene& s, osg::Camera& c) { scaleScene(s, c, 2e12); });
+    add("1x1x1 volume", [](VolumeScene& s, osg::Camera&) { resample(s, {1, 1, 1}); });
+    variants.push_back({.name = "4096x4x4 volume",
+                        .apply = [](VolumeScene& s, osg::Camera&) { resample(s, {4096, 4, 4}); },
+                        // Beyond the largest 3D texture of every driver of today's kind: a storage
+                        // that does not keep within the limits (traits.withinBudget) refuses it.
+                        .refuses =
+                            [](const Composition& c) {
+                                const ShaderFunction* storage =
+                                    ShaderFunctionRegistry::instance().find("VolumeStorage", c.functionFor("VolumeStorage"));
+                                return storage && !storage->traits.withinBudget && !storage->needs.empty();  // null reads nothing
+                            },
+                        .refusal = "beyond this driver's largest 3D texture"});
+    add("camera inside", [](VolumeScene&, osg::Camera& c) {
+        c.setViewMatrixAsLookAt(osg::Vec3d(-1.0, 1.0, 0.5), osg::Vec3d(20, -25, 15), osg::Vec3d(0, 0, 1));
+        c.setProjectionMatrixAsPerspective(60, 1.0, 0.01, 100.0);
+    });
+    variants.push_back({.name = "1x1 viewport", .width = 1, .height = 1});
+    variants.push_back({.name = "4096x4 viewport", .width = 4096, .height = 4, .apply = [](VolumeScene&, osg::Camera& c) {
+                            c.setProjectionMatrixAsPerspective(40, 1.0, 1.0, 100.0);  // stretched: the volume spans it
+                        }});
+    return variants;
 }
 
 bool showsVolume(const Composition& composition)
@@ -111,6 +254,89 @@ double largestDifference(const osg::Image& a, const osg::Image& b)
     return worst;
 }
 
+OracleBound oracleBound(const Composition& composition)
+{
+    OracleBound verdict{true, oracleBase, {}};
+    auto account = [&](const std::string& slot, const std::string& name) {
+        const ReferenceModel* model = ReferenceModelCatalog::instance().find(slot, name);
+        if (verdict.modelled && (!model || model->fidelity == ReferenceModel::Fidelity::None)) {
+            verdict.modelled = false;
+            verdict.why = slot + " " + name + ": " + (model ? model->why : std::string("declares no reference model"));
+        }
+        if (model && model->fidelity == ReferenceModel::Fidelity::Approximate) verdict.bound += model->bound;
+    };
+    for (const SlotInfo& slot : slots()) {
+        if (slot.isTemplate)
+            for (const std::string& name : composition.instancesOf(slot.name)) account(slot.name, name);
+        else
+            account(slot.name, composition.functionFor(slot.name));
+    }
+    if (!verdict.modelled) verdict.bound = 0.0;
+    return verdict;
+}
+
+bool modelledValue(const std::string& factor, const std::string& value)
+{
+    if (factor == "lights") return true;
+    auto modelled = [&](const std::string& name) {
+        const ReferenceModel* model = ReferenceModelCatalog::instance().find(factor, name);
+        return model && model->fidelity != ReferenceModel::Fidelity::None;
+    };
+    if (value.empty() || value.front() != '[') return modelled(value);
+    std::stringstream names(value.substr(1, value.size() - 2));
+    for (std::string name; std::getline(names, name, ',');)
+        if (!name.empty() && !modelled(name)) return false;
+    return true;
+}
+
+SweepOracle::SweepOracle(VolumeScene& scene, const osg::Matrixd& view, const osg::Matrixd& projection, int width,
+                         int height, const osg::Vec3& background)
+    : _policy(scene.policy()), _camera{view, projection, width, height}
+{
+    ReferenceOptions options;
+    options.background = osg::Vec3d(background);
+    _setup = referenceSetup(scene, _camera, options);
+}
+
+const ReferenceImage& SweepOracle::image(const Composition& composition)
+{
+    // What decides the reference: the implementations (their models), the clip kinds the
+    // instances bind, the number of lights shaded with.
+    std::set<std::string> kinds;
+    for (const char* slot : {"ClipPosition", "ClipRay"})
+        for (const std::string& name : composition.instancesOf(slot))
+            if (const ShaderFunction* f = ShaderFunctionRegistry::instance().find(slot, name)) kinds.insert(f->traits.clipKind);
+    std::string key = std::to_string(composition.lightCount) + ";";
+    for (const auto& [slot, name] : composition.choice) key += slot + "=" + name + ";";
+    for (const std::string& kind : kinds) key += "[" + kind + "]";
+    if (auto it = _cache.find(key); it != _cache.end()) return it->second;
+
+    ReferenceSetup setup = _setup;
+    for (ReferenceScene::Placed& placed : setup.scene.volumes) applyChoice(placed, ChosenComposition{composition, {}}, _policy);
+    std::erase_if(setup.scene.clips, [&](const ReferenceScene::Placed& clip) {
+        const auto* node = dynamic_cast<const ClipNode*>(clip.node.get());
+        return !node || !kinds.count(node->clipKind());
+    });
+    if (!kinds.count("depth"))  // rays run through the geometry, composited over its colour
+        std::fill(setup.options.geometryDepth.begin(), setup.options.geometryDepth.end(), 1.0f);
+    if (composition.lightCount == 0) setup.scene.lights.clear();
+    const auto start = std::chrono::steady_clock::now();
+    ReferenceImage reference = renderReference(setup.scene, _camera, setup.options);
+    _seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return _cache.emplace(key, std::move(reference)).first->second;
+}
+
+double SweepOracle::largestDifference(const osg::Image& gpu, const ReferenceImage& reference)
+{
+    const auto* p = reinterpret_cast<const float*>(gpu.data());
+    double worst = 0.0;
+    for (std::size_t k = 0, n = std::size_t(gpu.s()) * std::size_t(gpu.t()) * 4; k < n; ++k) {
+        const double d = std::abs(double(p[k]) - reference.rgba[k]);
+        worst = std::isfinite(d) ? std::max(worst, d) : HUGE_VAL;
+    }
+    return worst;
+}
+
 namespace {
 
 std::string joined(const std::vector<std::string>& messages)
@@ -139,7 +365,7 @@ std::vector<SweepFailure> checkFrame(const Composition& composition, const Frame
         else change = std::max(change, double(std::abs(px[k] - bg[k])));
     }
     if (nonFinite > 0) failures.push_back({"finite", std::to_string(nonFinite) + " NaN or Inf values > 0"});
-    if (thrown.empty() && timing.drawErrors.empty() && showsVolume(composition) && !(change > 1e-4)) {
+    if (thrown.empty() && timing.drawErrors.empty() && limits.drawn && showsVolume(composition) && !(change > 1e-4)) {
         std::ostringstream detail;
         detail << "largest change from the frame without the volume " << change << " <= 1e-4";
         failures.push_back({"drawn", detail.str()});

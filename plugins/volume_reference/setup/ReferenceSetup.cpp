@@ -44,37 +44,44 @@ void rasteriseGeometry(VolumeScene& scene, const ReferenceCamera& camera,
 
 }  // namespace
 
+void applyChoice(ReferenceScene::Placed& placed, const ChosenComposition& chosen, const CompositionPolicy& policy)
+{
+    const std::map<std::string, std::string>& choice = chosen.composition.choice;
+    placed.choice = choice;
+    placed.shadows.reset();
+    placed.occlusion = placed.shadowsGeometry = false;
+    // How it combines with the volumes it overlaps: the set traversal it would be marched by.
+    const ShaderFunction* set = policy.setTraversal({chosen});
+    const std::string combines = set ? set->traits.combines : std::string();
+    placed.blending = combines == "images"   ? ReferenceScene::Blending::Images
+                      : combines == "maxima" ? ReferenceScene::Blending::Maxima
+                                             : ReferenceScene::Blending::Media;
+    // The model of light the chosen Shadowing computes or approximates, as it declares (a
+    // plugin's without a declaration: none), and whether it darkens the opaque geometry.
+    if (auto it = choice.find("Shadowing"); it != choice.end()) {
+        if (const ReferenceModel* model = ReferenceModelCatalog::instance().find("Shadowing", it->second)) {
+            const bool shadows = model->fidelity != ReferenceModel::Fidelity::None &&
+                                 (model->model == ReferenceScene::exactShadows ||
+                                  model->model == ReferenceScene::exactShadowsAndOcclusion);
+            placed.shadows = shadows ? ReferenceScene::Shadows::Exact : ReferenceScene::Shadows::None;
+            placed.occlusion = shadows && model->model == ReferenceScene::exactShadowsAndOcclusion;
+        }
+    }
+    for (const auto& [slot, name] : choice)  // an implementation that needs a kind of data that darkens it
+        if (const ShaderFunction* f = policy.registry().find(slot, name))
+            placed.shadowsGeometry = placed.shadowsGeometry || policy.registry().darkensGeometry(*f);
+}
+
 ReferenceScene referenceScene(VolumeScene& scene)
 {
     ReferenceScene content = ReferenceScene::collect(scene);
-    // The policy's choice for each volume: only the number of lights decides its lighting; its
-    // Shadowing says which shadows are the truth.
+    // The policy's choice for each volume: only the number of lights decides its lighting.
     SceneOffer offer;
     offer.lights.resize(content.lights.size());
     for (auto& placed : content.volumes) {
         const auto& node = static_cast<const VolumeNode&>(*placed.node);
         const ChosenComposition chosen = scene.policy().choose(node.settings, offer, scene.pass);
-        placed.choice = chosen.composition.choice;
-        // How it combines with the volumes it overlaps: the set traversal it would be marched by.
-        const ShaderFunction* set = scene.policy().setTraversal({chosen});
-        const std::string combines = set ? set->traits.combines : std::string();
-        placed.blending = combines == "images"   ? ReferenceScene::Blending::Images
-                          : combines == "maxima" ? ReferenceScene::Blending::Maxima
-                                                 : ReferenceScene::Blending::Media;
-        // The model of light the chosen Shadowing computes or approximates, as it declares (a
-        // plugin's without a declaration: none), and whether it darkens the opaque geometry.
-        if (auto it = placed.choice.find("Shadowing"); it != placed.choice.end()) {
-            if (const ReferenceModel* model = ReferenceModelCatalog::instance().find("Shadowing", it->second)) {
-                const bool shadows = model->fidelity != ReferenceModel::Fidelity::None &&
-                                     (model->model == ReferenceScene::exactShadows ||
-                                      model->model == ReferenceScene::exactShadowsAndOcclusion);
-                placed.shadows = shadows ? ReferenceScene::Shadows::Exact : ReferenceScene::Shadows::None;
-                placed.occlusion = shadows && model->model == ReferenceScene::exactShadowsAndOcclusion;
-            }
-        }
-        for (const auto& [slot, name] : placed.choice)  // an implementation that needs a kind of data that darkens it
-            if (const ShaderFunction* f = scene.policy().registry().find(slot, name))
-                placed.shadowsGeometry = placed.shadowsGeometry || scene.policy().registry().darkensGeometry(*f);
+        applyChoice(placed, chosen, scene.policy());
     }
     return content;
 }

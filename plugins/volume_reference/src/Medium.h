@@ -69,6 +69,9 @@ struct Medium
     /// Lights in the node's local coordinates: position (w = 0: direction towards the light) and colour.
     std::vector<std::pair<glm::dvec4, glm::dvec3>> lights;
     ReferenceOptions::Gradient gradientKind = ReferenceOptions::Gradient::CentralDifferences;
+    /// Drawn with no Gradient (the renderer's choice declares "no gradient"): every gradient is
+    /// zero, so normals face the viewer and lighting_surface leaves samples unlit.
+    bool zeroGradient = false;
     /// Shadows of lit samples (Exact: each light's term times the transmittance to it through
     /// this medium, clipped as `clips` say), and how their rays converge: steps from
     /// shadowFirstStep x Δ0 halved until two transmittances differ by at most shadowTolerance,

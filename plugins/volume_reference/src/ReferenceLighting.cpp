@@ -17,9 +17,9 @@ glm::dvec3 Medium::shade(const glm::dvec3& tc, const glm::dvec3& local, const gl
                          double alpha, ShadowTally& tally) const
 {
     if (shading == Shading::None || (shading == Shading::Threshold && alpha < shadingThreshold)) return albedo;
-    glm::dvec3 gradient;
-    if (gradientKind == ReferenceOptions::Gradient::CentralDifferences) gradient = centralDifferences(tc);
-    else value(tc, &gradient);
+    glm::dvec3 gradient(0.0);  // zeroGradient: stays zero
+    if (!zeroGradient && gradientKind == ReferenceOptions::Gradient::CentralDifferences) gradient = centralDifferences(tc);
+    else if (!zeroGradient) value(tc, &gradient);
     const double scale = std::max({std::abs(gradient.x), std::abs(gradient.y), std::abs(gradient.z)});
     // A gradient too small for a direction (as the GPU's volren_normalFromGradient: largest
     // component <= 1e-30), infinite or NaN: the view direction.
@@ -147,6 +147,9 @@ void setShading(Medium& m, const ReferenceScene::Placed& placed, bool lit)
     const double voxel = std::min({m.size.x / m.dims.x, m.size.y / m.dims.y, m.size.z / m.dims.z});
     m.occlusionStart = s.number("coneStart") * voxel;
     m.occlusionDistance = s.number("aoDistance") * voxel;
+    // The renderer's Gradient, where it chose one: none gives a zero gradient.
+    if (auto it = placed.choice.find("Gradient"); shaded && it != placed.choice.end())
+        m.zeroGradient = declaredModel("Gradient", it->second, node) == "no gradient";
     m.ambient = s.number("ambient");
     m.specular = s.number("specular");
     m.shininess = s.number("shininess");

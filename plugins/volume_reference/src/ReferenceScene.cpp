@@ -100,7 +100,21 @@ const std::map<std::string, std::vector<std::string>>& ReferenceScene::models()
          {"no light", "lambert diffuse", "diffuse + blinn-phong highlight", "diffuse + cook-torrance ggx highlight",
           "henyey-greenstein phase"}},
         {"Shadowing", {"unshadowed", ReferenceScene::exactShadows, ReferenceScene::exactShadowsAndOcclusion}},
-        {"Weighting", {"unweighted", "axis curves"}}};
+        {"Weighting", {"unweighted", "axis curves"}},
+        // What the integrator itself does for every volume: an implementation declaring one of
+        // these computes it (or approximates it within its bound); one that computes anything
+        // else declares Fidelity::None, and no reference compares it.
+        {"RaySetup", {"the volume box from the near plane"}},
+        {"VolumeStorage", {"voxel values"}},
+        {"Reconstruction", {"trilinear field"}},
+        {"Classification", {"post-classified transfer function"}},
+        {"GradientInput", {"no gradient", "scalar field"}},
+        {"Gradient", {"no gradient", "central differences"}},  // no gradient: zero, normals face the viewer
+        {"ClipPosition", {"clip shape"}},
+        {"ClipRay", {"clip shape", "opaque geometry's depth"}},
+        {"Acceleration", {"every sample"}},
+        {"Jitter", {"no jitter"}},
+        {"RayTraversal", {"emission-absorption"}}};
     return names;
 }
 

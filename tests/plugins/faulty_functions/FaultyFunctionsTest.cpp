@@ -23,12 +23,13 @@ struct Sweep
 };
 
 /// `volren permutations --render` over the compositions (no clip instances, no lights) that
-/// choose every implementation of `where`, at most `count`, with `environment` set.
-Sweep sweep(const std::string& environment, const std::vector<std::string>& where, int count)
+/// choose every implementation of `where`, at most `count`, with `environment` set and `more`
+/// options.
+Sweep sweep(const std::string& environment, const std::vector<std::string>& where, int count, const std::string& more = "")
 {
     std::string command = environment + " '" + VOLREN_BINARY_DIR + "/bin/volren' permutations --render --max-instances 0 "
                                                                    "--max-lights 0 --count " +
-                          std::to_string(count);
+                          std::to_string(count) + " " + more;
     for (const std::string& w : where) command += " --where " + w;
     command += " 2>&1";
     Sweep s;
@@ -114,6 +115,33 @@ TEST(FaultyFunctions, ABrokenIncludeOnTheShaderPathOverridesItAndIsNoImplementat
     const auto spaceLine = [](const std::string& out) { return out.substr(0, out.find(" valid compositions")); };
     EXPECT_EQ(spaceLine(s.output.substr(s.output.find("volren permutations:"))),
               spaceLine(real.output.substr(real.output.find("volren permutations:"))));
+}
+
+TEST(FaultyFunctions, AWrongColourInAnExactImplementationFailsAgainstTheReference)
+{
+    // Red and blue swapped in tf1d: every other check passes; the reference comparison fails.
+    const std::vector<std::string> where = with(drawnSetting, "Classification=tf1d");
+    const Sweep s = sweep(std::string("VOLREN_SHADER_PATH='") + WRONG_VALUE_DIR + "'", where, 3, "--modelled");
+    expectCaught(s, "reference", "Classification=tf1d", 3);
+    EXPECT_NE(s.failed.front().find("against the CPU reference"), std::string::npos) << s.failed.front();
+    // The same compositions with the real file are compared with the reference and pass.
+    const Sweep real = sweep("", where, 3, "--modelled");
+    EXPECT_EQ(real.status, 0) << real.output;
+    EXPECT_NE(real.output.find(" reference 3"), std::string::npos) << real.output;
+}
+
+TEST(FaultyFunctions, SkippingLeapsOverWhatTheClassificationMirrorCallsEmpty)
+{
+    // The probe classification shows values below 0.5 while its mirror calls them invisible:
+    // occupancy skipping that leaps over those cells draws less than the same composition
+    // without skipping, so the sweep's bit-identical comparison with Acceleration=null fails.
+    const std::vector<std::string> where = with(with(drawnSetting, "Classification=hidden_below_half"), "Acceleration=occupancy");
+    expectCaught(sweep(plugin, where, 3), "acceleration", "Acceleration=occupancy", 3);
+    // An occupancy leap that never leaps (planted on the shader path) skips nothing: the same
+    // compositions then pass, which is why the probe, not "skipping changes nothing", is the test.
+    const Sweep never = sweep(plugin + " VOLREN_SHADER_PATH='" + NEVER_LEAPS_DIR + ":" + FAULTY_SHADER_DIR + "'", where, 3);
+    EXPECT_EQ(never.status, 0) << never.output;
+    EXPECT_NE(never.output.find("acceleration 3"), std::string::npos) << never.output;
 }
 
 }  // namespace

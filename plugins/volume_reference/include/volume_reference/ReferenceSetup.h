@@ -3,7 +3,9 @@
 
 namespace volren {
 
+class CompositionPolicy;
 class VolumeScene;
+struct ChosenComposition;
 
 /// The reference of a scene as the renderer draws it: the ReferenceScene and ReferenceOptions
 /// for renderReference().
@@ -12,6 +14,12 @@ struct ReferenceSetup
     ReferenceScene scene;
     ReferenceOptions options;
 };
+
+/// Makes `placed` the volume as `chosen` draws it: its implementations (the lighting models they
+/// declare), its shadows and occlusion from its Shadowing's declared model, whether it darkens
+/// the opaque geometry (an implementation needing a kind of data that does), its blending from
+/// the set traversal `policy` would march it by.
+void applyChoice(ReferenceScene::Placed& placed, const ChosenComposition& chosen, const CompositionPolicy& policy);
 
 /// The volumes of `scene`, each lit as its CompositionPolicy chooses (Shading and Illumination
 /// from the lights that reach it, the pass's `lighting` and forced-null slots applied; shadows

@@ -2,6 +2,7 @@
 #include <volume_renderer/CompositionPolicy.h>
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -22,9 +23,13 @@ public:
     std::size_t size() const { return _size; }
     /// Valid composition `index` (0 <= index < size()).
     Composition at(std::size_t index) const;
+    /// Whether a factor's value may be taken: (factor, value) as a composition key spells them
+    /// ("Reconstruction", "trilinear"; "ClipPosition", "[box,plane]"; "lights", "1").
+    using ValueFilter = std::function<bool(const std::string& factor, const std::string& value)>;
     /// Indices of a covering subset: every pair of factor values (slot choices, clip instance
-    /// lists, light counts) that occurs in some valid composition occurs in one of these.
-    std::vector<std::size_t> pairwiseCover() const;
+    /// lists, light counts) that occurs in some valid composition occurs in one of these. With
+    /// `allowed`, of the compositions whose every value it allows (their pairs covered).
+    std::vector<std::size_t> pairwiseCover(const ValueFilter& allowed = {}) const;
     /// The policy whose rules the space follows.
     const CompositionPolicy& policy() const { return _policy; }
 

@@ -210,7 +210,7 @@ Composition PermutationSpace::at(std::size_t index) const
     return compose(choiceOf(rank(index)));
 }
 
-std::vector<std::size_t> PermutationSpace::pairwiseCover() const
+std::vector<std::size_t> PermutationSpace::pairwiseCover(const ValueFilter& allowed) const
 {
     // Greedy: repeatedly take the candidate that covers the most uncovered pairs (the first such).
     // The candidates are, for each pair, the first composition holding it (so every pair can be
@@ -224,12 +224,23 @@ std::vector<std::size_t> PermutationSpace::pairwiseCover() const
         return (offset[i] + a) * values + offset[j] + b;
     };
     constexpr std::size_t none = ~std::size_t(0);
+    std::vector<char> allowedValue(values, 1);  // per factor value
+    if (allowed)
+        for (std::size_t i = 0; i < n; ++i)
+            for (std::size_t a = 0; a < _factors[i].values.size(); ++a)
+                allowedValue[offset[i] + a] = allowed(_factors[i].name, _factors[i].values[a]);
+    auto inSubspace = [&](const std::vector<std::uint8_t>& v) {
+        for (std::size_t i = 0; i < n; ++i)
+            if (!allowedValue[offset[i] + v[i]]) return false;
+        return true;
+    };
     std::vector<std::size_t> witness(values * values, none);
     for (const Segment& segment : _segments)  // every composition in index order, decoded in turn
         for (std::size_t b = 0; b < segment.blocks.size(); ++b) {
             const std::size_t end = b + 1 < segment.blocks.size() ? segment.blocks[b + 1].first : segment.offsets.size();
             for (std::size_t local = segment.blocks[b].first; local < end; ++local) {
                 const std::vector<std::uint8_t> v = choiceOf(segment.blocks[b].base + segment.offsets[local]);
+                if (!inSubspace(v)) continue;
                 const std::size_t k = segment.first + local;
                 for (std::size_t i = 0; i < n; ++i)
                     for (std::size_t j = i + 1; j < n; ++j) {
@@ -243,7 +254,8 @@ std::vector<std::size_t> PermutationSpace::pairwiseCover() const
     for (std::size_t w : witness)
         if (w != none) candidates.push_back(w), ++remaining;
     const std::size_t stride = std::max<std::size_t>(1, _size / 100000);
-    for (std::size_t k = 0; k < _size; k += stride) candidates.push_back(k);
+    for (std::size_t k = 0; k < _size; k += stride)
+        if (!allowed || inSubspace(choiceOf(rank(k)))) candidates.push_back(k);
     std::sort(candidates.begin(), candidates.end());
     candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
     std::vector<std::vector<std::uint8_t>> decoded;  // the candidates' choices

@@ -93,7 +93,8 @@ ShaderFunction gridSkipping(const std::string& name, const std::string& sampler,
                     bindCells(c);
                     c.texture(sampler, c.aux.at(aux).get());
                 },
-            .traits = {.calls = SlotList{}, .skips = skips}};
+            .traits = {.calls = SlotList{}, .skips = skips},
+            .reference = ReferenceModel::exact("every sample")};  // it leaps only over what adds nothing
 }
 
 }  // namespace
@@ -104,6 +105,7 @@ void registerAccelerationFunctions(ShaderFunctionRegistry& registry)
                   .name = "null",
                   .includes = {"Acceleration/every_step.glsl"},
                   .traits = {.calls = SlotList{}},
+                  .reference = ReferenceModel::exact("every sample"),
                   .benchRows = {{}}});  // skipping off: the same image, the cost of marching all
 
     // The grids are made from the volume's macrocell value ranges with the Reconstruction's
@@ -135,6 +137,7 @@ void registerAccelerationFunctions(ShaderFunctionRegistry& registry)
                                            {"Acceleration/occupancy_leap.glsl"});
     adaptive.uniforms.push_back({"volren_adaptiveSteps", "int", ""});
     adaptive.traits.approximates = true;
+    adaptive.reference = ReferenceModel::approximate("every sample", 0.02);  // at the default tolerance
     adaptive.benchRows = {{}, {{"adaptiveSteps", "8"}}, {{"adaptiveTolerance", "0.02"}}};
     adaptive.parameters = {{.key = "adaptiveTolerance", .defaultValue = 1.0 / 256.0, .lo = 0.0, .hi = 1.0,
                             .help = "largest change of the classified RGBA over a macrocell that counts as homogeneous",

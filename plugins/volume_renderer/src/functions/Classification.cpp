@@ -124,6 +124,7 @@ void registerClassificationFunctions(ShaderFunctionRegistry& registry)
                   .uniforms = bindings::window,
                   .bind = bindings::bindWindow,
                   .traits = leaf,
+                  .reference = ReferenceModel::none("a grey ramp over the window, not the transfer function"),
                   .mayShow = [](const BindContext& c) -> std::function<bool(double, double)> {
                       return [&c](double lo, double hi) {  // opacity = u: positive somewhere (float slack)
                           const double u = largestWindowed(c, lo, hi);
@@ -159,6 +160,7 @@ void registerClassificationFunctions(ShaderFunctionRegistry& registry)
                           c.texture("volren_transferFunction", c.aux.at("transfer function table").get());
                       },
                   .traits = leaf,
+                  .reference = ReferenceModel::exact("post-classified transfer function"),
                   .mayShow = tableMirror,
                   .variation = tableVariation});
 
@@ -173,6 +175,8 @@ void registerClassificationFunctions(ShaderFunctionRegistry& registry)
                           c.texture("volren_premultipliedTable", c.aux.at("premultiplied table").get());
                       },
                   .traits = leaf,
+                  // Colour premultiplied in the table, interpolated between its entries as such.
+                  .reference = ReferenceModel::approximate("post-classified transfer function", 0.01),
                   .benchRows = {{}},
                   .mayShow = tableMirror,  // the same opacities as tf1d
                   .variation = tableVariation});
@@ -191,6 +195,7 @@ void registerClassificationFunctions(ShaderFunctionRegistry& registry)
                           c.texture("volren_transferFunction", c.aux.at("transfer function table").get());
                       },
                   .traits = leaf,
+                  .reference = ReferenceModel::none("opaque above a threshold, not the transfer function's opacity"),
                   .mayShow = [](const BindContext& c) -> std::function<bool(double, double)> {
                       const double threshold = c.settings.number("threshold");
                       return [&c, threshold](double lo, double hi) {  // opaque where u reaches the threshold

@@ -23,12 +23,13 @@ ImplementationTraits clipping(const std::string& kind)
 
 void registerClipPositionFunctions(ShaderFunctionRegistry& registry)
 {
-    registry.add({.slot = "ClipPosition", .name = "null", .traits = {.calls = SlotList{}}});
+    registry.add({.slot = "ClipPosition", .name = "null", .traits = {.calls = SlotList{}}, .reference = ReferenceModel::none("never an instance: a shape with no clip is an empty instance list")});
 
     ShaderFunction box{.slot = "ClipPosition",
                        .name = "box",
                        .uniforms = {matrix, invert, {"volren_clipBoxMin", "vec3", ""}, {"volren_clipBoxMax", "vec3", ""}},
-                       .traits = clipping("box")};
+                       .traits = clipping("box"),
+                       .reference = ReferenceModel::exact("clip shape")};
     box.bind = [](BindContext& c) {
         const auto* node = dynamic_cast<const ClipBoxNode*>(c.clip().node);
         if (!node) return;
@@ -43,7 +44,8 @@ void registerClipPositionFunctions(ShaderFunctionRegistry& registry)
         .slot = "ClipPosition",
         .name = "ellipsoid",
         .uniforms = {matrix, invert, {"volren_clipCentre", "vec3", ""}, {"volren_clipRadii", "vec3", ""}},
-        .traits = clipping("ellipsoid")};
+        .traits = clipping("ellipsoid"),
+        .reference = ReferenceModel::exact("clip shape")};
     ellipsoid.bind = [](BindContext& c) {
         const auto* node = dynamic_cast<const ClipEllipsoidNode*>(c.clip().node);
         if (!node) return;
@@ -57,7 +59,8 @@ void registerClipPositionFunctions(ShaderFunctionRegistry& registry)
     ShaderFunction plane{.slot = "ClipPosition",
                          .name = "plane",
                          .uniforms = {invert, {"volren_clipPlane", "vec4", ""}},
-                         .traits = clipping("plane")};
+                         .traits = clipping("plane"),
+                         .reference = ReferenceModel::exact("clip shape")};
     plane.bind = [](BindContext& c) {
         const auto* node = dynamic_cast<const ClipPlaneNode*>(c.clip().node);
         if (!node) return;
@@ -73,7 +76,8 @@ void registerClipPositionFunctions(ShaderFunctionRegistry& registry)
         .name = "mask",
         .uniforms = {matrix, invert, {"volren_clipThreshold", "float", ""}, {"volren_clipMaskValue", "vec2", ""}},
         .textures = {{"volren_clipMask", "sampler3D"}},
-        .traits = clipping("mask")};
+        .traits = clipping("mask"),
+        .reference = ReferenceModel::exact("clip shape")};
     mask.bind = [](BindContext& c) {
         const auto* node = dynamic_cast<const ClipMaskNode*>(c.clip().node);
         if (!node || !node->mask) return;

@@ -12,7 +12,7 @@ namespace volren {
 
 void registerClipRayFunctions(ShaderFunctionRegistry& registry)
 {
-    registry.add({.slot = "ClipRay", .name = "null", .traits = {.calls = SlotList{}}});
+    registry.add({.slot = "ClipRay", .name = "null", .traits = {.calls = SlotList{}}, .reference = ReferenceModel::none("never an instance: a shape with no clip is an empty instance list")});
 
     registry.add({.slot = "ClipRay",
                   .name = "plane",
@@ -27,7 +27,8 @@ void registerClipRayFunctions(ShaderFunctionRegistry& registry)
                           inTexture.transformProvidingInverse(c.clip().textureToShape);
                           c.uniform("volren_clipRayPlane", osg::Vec4f(inTexture.asVec4()));
                       },
-                  .traits = {.calls = SlotList{}, .clipKind = "plane"}});
+                  .traits = {.calls = SlotList{}, .clipKind = "plane"},
+                  .reference = ReferenceModel::exact("clip shape")});
 
     // The depth of the opaque geometry drawn before the volumes, per camera (ScreenPasses): as
     // sampler2D volren_depthTexture read with texelFetch at gl_FragCoord.xy - volren_viewportOrigin,
@@ -46,7 +47,8 @@ void registerClipRayFunctions(ShaderFunctionRegistry& registry)
                          .textures = {{"volren_depthTexture", "sampler2D", true}},
                          .needs = {"depth texture"},
                          .bind = [](BindContext& c) { c.unsuffixed(bindings::bindGeometry); },
-                         .traits = {.calls = SlotList{}, .clipKind = "depth", .single = true}};
+                         .traits = {.calls = SlotList{}, .clipKind = "depth", .single = true},
+                         .reference = ReferenceModel::exact("opaque geometry's depth")};
     for (UniformDecl u : bindings::geometry) {
         u.shared = true;
         depth.uniforms.push_back(u);

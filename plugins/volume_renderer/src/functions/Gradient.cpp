@@ -7,7 +7,11 @@ namespace volren {
 
 void registerGradientFunctions(ShaderFunctionRegistry& registry)
 {
-    registry.add({.slot = "Gradient", .name = "null", .traits = {.calls = SlotList{}}});
+    // A zero gradient: lit samples' normals face the viewer (the reference models it).
+    registry.add({.slot = "Gradient",
+                  .name = "null",
+                  .traits = {.calls = SlotList{}},
+                  .reference = ReferenceModel::exact("no gradient")});
     for (const char* name : {"forward", "backward", "central", "central9"})
         registry.add({.slot = "Gradient",
                       .name = name,
@@ -16,6 +20,12 @@ void registerGradientFunctions(ShaderFunctionRegistry& registry)
                       .traits = {.calls = SlotList{"GradientInput"},
                                  .required = {"GradientInput"},
                                  .aliases = name == std::string("central9") ? SlotList{"central-9"} : SlotList{}},
+                      // One-sided and 9-point differences approximate the reference's central
+                      // ones: lit colours differ where the normals do (on the composition sweep's
+                      // lit shell, SweepHarness.cpp: one-sided 0.15, 9-point within its base).
+                      .reference = name == std::string("central")    ? ReferenceModel::exact("central differences")
+                                   : name == std::string("central9") ? ReferenceModel::approximate("central differences", 0.01)
+                                                                     : ReferenceModel::approximate("central differences", 0.17),
                       // The cheapest and the widest against the default (central).
                       .benchRows = name == std::string("forward") || name == std::string("central9")
                                        ? std::vector<BenchRow>{{}}

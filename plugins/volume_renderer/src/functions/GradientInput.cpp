@@ -5,11 +5,19 @@ namespace volren {
 
 void registerGradientInputFunctions(ShaderFunctionRegistry& registry)
 {
-    registry.add({.slot = "GradientInput", .name = "null", .traits = {.calls = SlotList{}}});
-    registry.add({.slot = "GradientInput", .name = "scalar", .traits = {.calls = SlotList{"Reconstruction"}}});
+    // null only where nothing reads a gradient (Gradient requires an input).
+    registry.add({.slot = "GradientInput",
+                  .name = "null",
+                  .traits = {.calls = SlotList{}},
+                  .reference = ReferenceModel::exact("no gradient")});
+    registry.add({.slot = "GradientInput",
+                  .name = "scalar",
+                  .traits = {.calls = SlotList{"Reconstruction"}},
+                  .reference = ReferenceModel::exact("scalar field")});
     registry.add({.slot = "GradientInput",
                   .name = "alpha",
-                  .traits = {.calls = SlotList{"Reconstruction", "Classification"}}});
+                  .traits = {.calls = SlotList{"Reconstruction", "Classification"}},
+                  .reference = ReferenceModel::none("the reference's normals come from the scalar field")});
 }
 
 }  // namespace volren

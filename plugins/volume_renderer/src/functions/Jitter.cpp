@@ -37,13 +37,15 @@ osg::Texture2D* jitterTile()
 void registerJitterFunctions(ShaderFunctionRegistry& registry)
 {
     const ImplementationTraits leaf{.calls = SlotList{}};
-    registry.add({.slot = "Jitter", .name = "null", .traits = leaf, .benchRows = {{}}});
-    registry.add({.slot = "Jitter", .name = "hash", .traits = leaf});
+    registry.add({.slot = "Jitter", .name = "null", .traits = leaf, .reference = ReferenceModel::exact("no jitter"), .benchRows = {{}}});
+    // Offsets of up to one step per ray: the same integral, sampled elsewhere.
+    registry.add({.slot = "Jitter", .name = "hash", .traits = leaf, .reference = ReferenceModel::approximate("no jitter", 0.02)});
     registry.add({.slot = "Jitter",
                   .name = "texture",
                   .textures = {{"volren_jitterTexture", "sampler2D"}},
                   .bind = [](BindContext& c) { c.texture("volren_jitterTexture", jitterTile()); },
                   .traits = leaf,
+                  .reference = ReferenceModel::approximate("no jitter", 0.02),
                   .benchRows = {{}}});
 }
 

@@ -21,7 +21,8 @@ ShaderFunction raySetup(const std::string& name)
                     bindings::bindGeometry(c);  // the vertex stage reads volren_worldSize
                     c.uniform("volren_writesDepth", c.writesDepth);
                 },
-            .traits = {.calls = SlotList{"ClipRay", "Jitter", "RayTraversal"}}};
+            .traits = {.calls = SlotList{"ClipRay", "Jitter", "RayTraversal"}},
+            .reference = ReferenceModel::exact("the volume box from the near plane")};
 }
 
 }  // namespace
@@ -50,7 +51,8 @@ void registerRaySetupFunctions(ShaderFunctionRegistry& registry)
                   .name = "null",
                   .vertexFile = "RaySetup/box.vert",
                   .bind = raySetup("null").bind,
-                  .traits = {.calls = SlotList{}}});
+                  .traits = {.calls = SlotList{}},
+                  .reference = ReferenceModel::none("it casts no ray: the sweep's 'drawn' check is its test")});
 }
 
 }  // namespace volren

@@ -55,7 +55,8 @@ ShaderFunction traversal(const std::string& name, SlotList calls, std::vector<Un
             .includes = {"RayTraversal/march.glsl"},
             .uniforms = bindings::geometry + marching + extra,
             .bind = bindMarching,
-            .traits = {.calls = std::move(calls)}};
+            .traits = {.calls = std::move(calls)},
+            .reference = ReferenceModel::none("the reference integrates emission-absorption only; closed forms check it")};
 }
 
 const SlotList compositing = {"Reconstruction", "Classification", "ClipPosition", "Shading"};
@@ -65,7 +66,10 @@ const SlotList projecting = {"Reconstruction", "Classification", "ClipPosition"}
 
 void registerRayTraversalFunctions(ShaderFunctionRegistry& registry)
 {
-    registry.add({.slot = "RayTraversal", .name = "null", .traits = {.calls = SlotList{}}});
+    registry.add({.slot = "RayTraversal",
+                  .name = "null",
+                  .traits = {.calls = SlotList{}},
+                  .reference = ReferenceModel::none("it marches nothing: the sweep's 'drawn' check is its test")});
 
     // The compositing traversals leap over what the Acceleration proves transparent; their
     // samples' opacities are scaled by the Weighting.
@@ -75,10 +79,12 @@ void registerRayTraversalFunctions(ShaderFunctionRegistry& registry)
     frontToBack.traits.sharesRayAs = "emission_absorption";
     frontToBack.traits.aliases = {"dvr"};
     frontToBack.traits.skips = "opacity";
+    frontToBack.reference = ReferenceModel::exact("emission-absorption");
     registry.add(frontToBack);
     ShaderFunction backToFront = traversal("dvr_back_to_front", weighted);
     backToFront.traits.sharesRayAs = "emission_absorption";
     backToFront.traits.skips = "opacity";
+    backToFront.reference = ReferenceModel::exact("emission-absorption");
     registry.add(backToFront);
 
     // The projections never shade; MIP and MinIP leap over what cannot pass their running extremum

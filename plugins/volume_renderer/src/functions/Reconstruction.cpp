@@ -7,7 +7,10 @@ namespace volren {
 
 void registerReconstructionFunctions(ShaderFunctionRegistry& registry)
 {
-    registry.add({.slot = "Reconstruction", .name = "null", .traits = {.calls = SlotList{}}});
+    registry.add({.slot = "Reconstruction",
+                  .name = "null",
+                  .traits = {.calls = SlotList{}},
+                  .reference = ReferenceModel::none("it reads no value: the sweep's 'drawn' check is its test")});
     // Footprints: voxels beyond a sample's cell its weights (all >= 0) may reach.
     for (const auto& [name, footprint] : {std::pair{"nearest", 1}, {"trilinear", 1}, {"tricubic", 2}})
         registry.add({.slot = "Reconstruction",
@@ -15,6 +18,9 @@ void registerReconstructionFunctions(ShaderFunctionRegistry& registry)
                       .uniforms = bindings::geometry,
                       .bind = bindings::bindGeometry,
                       .traits = {.calls = SlotList{"VolumeStorage"}, .required = {"VolumeStorage"}, .footprint = footprint},
+                      .reference = std::string(name) == "trilinear"
+                                       ? ReferenceModel::exact("trilinear field")
+                                       : ReferenceModel::none("the reference reconstructs trilinearly only"),
                       // The bench measures the others against the default (trilinear).
                       .benchRows = std::string(name) == "trilinear" ? std::vector<BenchRow>{} : std::vector<BenchRow>{{}}});
 }

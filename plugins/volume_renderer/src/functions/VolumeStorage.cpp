@@ -10,11 +10,14 @@
 #include <volume_renderer/ShaderFunctionRegistry.h>
 
 #include <volume_model/RenderSettings.h>
+#include <volume_model/VolumeNode.h>
 #include <volume_model/TransferFunction.h>
 
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <stdexcept>
+#include <string>
 
 namespace volren {
 
@@ -54,6 +57,17 @@ void registerVolumeStorageFunctions(ShaderFunctionRegistry& registry)
     // The texture of the sampled mip level (TextureCache::volume), shared per volume.
     registry.addAuxKind({.name = "volume texture", .order = 0, .provide = [](AuxRequest& r) -> osg::Texture* {
                              const BindContext& c = r.context;
+                             // OSG would shrink a larger image silently: a clear error instead
+                             // (the policy chooses bricks for such volumes; this is a forced choice).
+                             const osg::Vec3i& d = c.volume.dims();
+                             const int x = std::max(1, d.x() >> c.lod), y = std::max(1, d.y() >> c.lod),
+                                       z = std::max(1, d.z() >> c.lod);
+                             if (std::max({x, y, z}) > largest3DTexture())
+                                 throw std::runtime_error(
+                                     "VolumeStorage texture: volume '" + c.node.getName() + "' is " + std::to_string(x) + "x" +
+                                     std::to_string(y) + "x" + std::to_string(z) + " texels at level " + std::to_string(c.lod) +
+                                     ", beyond this driver's largest 3D texture (" + std::to_string(largest3DTexture()) +
+                                     "): choose VolumeStorage bricked (--set volumeStorage=bricked)");
                              return r.textures.volume(c.volume, false, r.cull, c.lod, wideTexels(c));
                          }});
     // The volume's mip levels in bricks in a pool texture with their page table (BrickPool.h),
@@ -75,7 +89,10 @@ void registerVolumeStorageFunctions(ShaderFunctionRegistry& registry)
                              return bricks.pool.get();
                          }});
 
-    registry.add({.slot = "VolumeStorage", .name = "null", .traits = {.calls = SlotList{}}});
+    registry.add({.slot = "VolumeStorage",
+                  .name = "null",
+                  .traits = {.calls = SlotList{}},
+                  .reference = ReferenceModel::none("it reads no voxel: the sweep's 'drawn' check is its test")});
     // One 3D texture of the sampled mip level (16-bit texels of 8-bit data where texturePrecision
     // says so).
     registry.add({.slot = "VolumeStorage",
@@ -83,7 +100,8 @@ void registerVolumeStorageFunctions(ShaderFunctionRegistry& registry)
                   .textures = {bindings::volumeTexture},
                   .needs = {"volume texture"},
                   .bind = bindings::bindVolumeTexture,
-                  .traits = {.calls = SlotList{}}});
+                  .traits = {.calls = SlotList{}},
+                  .reference = ReferenceModel::exact("voxel values")});
     // The levels in bricks in a pool within the node's memoryBudgetMB (BrickPool.h): chosen by the
     // policy for volumes that do not fit the budget or the largest 3D texture, or when asked.
     registry.add({.slot = "VolumeStorage",
@@ -117,6 +135,8 @@ void registerVolumeStorageFunctions(ShaderFunctionRegistry& registry)
                           }
                       },
                   .traits = {.calls = SlotList{}, .withinBudget = true},
+                  // At the full-resolution level; a coarser level (over budget) is the data it shows.
+                  .reference = ReferenceModel::exact("voxel values"),
                   .benchRows = {{}}});  // the cost of the page table lookup when a volume is bricked
 }
 
