@@ -138,6 +138,38 @@ TEST_F(TraversalClosedForm, GradientMipOfALinearRampIsItsSlopeWithEveryGradient)
     }
 }
 
+TEST_F(TraversalClosedForm, AlphaGradientInputDifferentiatesTheTfOpacityNotTheScalar)
+{
+    // v = 0.06 i under a white TF whose opacity is v / 2: the opacity's gradient is 0.03 per
+    // voxel, the scalar's 0.06; gmip looks each magnitude up in the TF (premultiplied: white
+    // times the opacity there), so alpha gives 0.03 / 2 and scalar 0.06 / 2.
+    osg::ref_ptr<Volume> volume = field([](int i, int, int) { return 0.06 * i; });
+    osg::ref_ptr<TransferFunction> tf = new TransferFunction;
+    tf->setPoint(0.0, osg::Vec4(1, 1, 1, 0.0f));
+    tf->setPoint(1.0, osg::Vec4(1, 1, 1, 0.5f));
+    tf->setResolution(4097);
+    for (const auto& [input, expected] : {std::pair{"alpha", 0.015}, std::pair{"scalar", 0.03}}) {
+        const Pixels img = draw(volume.get(), tf.get(),
+                                {{"RayTraversal", "gmip"}, {"Gradient", "central"}, {"GradientInput", input}, {"Reconstruction", "trilinear"}});
+        for (int y = 0; y < n; ++y)
+            for (int x = 2; x < n - 2; ++x) ASSERT_NEAR(img.at(x, y).r(), expected, 1e-3) << input << " " << x << "," << y;
+    }
+}
+
+TEST_F(TraversalClosedForm, NullClassificationIsAGreyRampOfTheWindowPosition)
+{
+    // Without a TF the classification is (u, u, u, u) for window position u: a homogeneous slab
+    // of u = 0.25, n voxels thick, has opacity 1 - (1 - u)^n and premultiplied colour u times it.
+    osg::ref_ptr<Volume> volume = field([](int, int, int) { return 0.25; });
+    const Pixels img = draw(volume.get(), grey(0, 1).get(), {{"Classification", "null"}, {"Reconstruction", "trilinear"}});
+    const double alpha = 1.0 - std::pow(1.0 - 0.25, n);
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x) {
+            ASSERT_NEAR(img.at(x, y).a(), alpha, 2e-3) << x << "," << y;
+            ASSERT_NEAR(img.at(x, y).g(), 0.25 * alpha, 2e-3) << x << "," << y;
+        }
+}
+
 TEST_F(TraversalClosedForm, ThresholdClassificationIsOpaqueTfColourAboveItsLevelAndEmptyBelow)
 {
     // Columns x < 4 hold 0.3, the others 0.7 of the window; threshold 0.5: the first sample of a
