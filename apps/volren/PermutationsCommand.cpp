@@ -163,13 +163,10 @@ public:
         std::vector<std::size_t> indices;
         // The pairwise cover of the compositions choosing the --where implementations (and, with
         // --modelled, only modelled ones): every pair of values these may take, covered.
-        auto allowed = [&o](const std::string& factor, const std::string& value) {
-            if (o.modelled && !modelledValue(factor, value)) return false;
+        auto allowed = [&o](const std::string& factor, const std::vector<std::string>& names) {
+            if (o.modelled && !modelledValue(factor, names)) return false;
             for (const auto& [slot, name] : o.where)
-                if (slot == factor && value != name && value.find("[" + name + "]") == std::string::npos &&
-                    value.find("[" + name + ",") == std::string::npos && value.find("," + name + "]") == std::string::npos &&
-                    value.find("," + name + ",") == std::string::npos)
-                    return false;
+                if (slot == factor && std::find(names.begin(), names.end(), name) == names.end()) return false;
             return true;
         };
         if (o.pairwise) indices = space.pairwiseCover(allowed);

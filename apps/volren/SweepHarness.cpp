@@ -25,6 +25,36 @@
 
 namespace volren::app {
 
+namespace {
+
+/// The sweep field's soft ball leaning along x at (dx, dy, dz) in [-1, 1]^3 over the box.
+double leaningBall(double dx, double dy, double dz)
+{
+    return std::max(0.0, 1.0 - std::sqrt(dx * dx + dy * dy + dz * dz)) * (0.75 + 0.25 * dx);
+}
+
+/// The opaque box through the volume (the depth clip's geometry), scaled by `s`.
+osg::Drawable* opaqueBox(double s)
+{
+    const float f = float(s);
+    return new osg::ShapeDrawable(new osg::Box(osg::Vec3(4.5f, 0.0f, -2.0f) * f, 3.0f * f, 14.0f * f, 1.0f * f));
+}
+
+/// The largest absolute difference between `n` values of `a` and of `b` (infinite where one is
+/// not finite).
+template <typename A, typename B>
+double largestDifferenceOf(const A* a, const B* b, std::size_t n)
+{
+    double worst = 0.0;
+    for (std::size_t k = 0; k < n; ++k) {
+        const double d = std::abs(double(a[k]) - double(b[k]));
+        worst = std::isfinite(d) ? std::max(worst, d) : HUGE_VAL;
+    }
+    return worst;
+}
+
+}  // namespace
+
 osg::ref_ptr<VolumeScene> sweepScene()
 {
     // A soft ball leaning along x (no axis mirrors its gradients onto another), 12 x 10 x 8
@@ -38,8 +68,7 @@ osg::ref_ptr<VolumeScene> sweepScene()
         for (int y = 0; y < ny; ++y)
             for (int x = 0; x < nx; ++x) {
                 const double dx = (x - 11.5) / 12, dy = (y - 9.5) / 10, dz = (z - 7.5) / 8;
-                const double ball = std::max(0.0, 1.0 - std::sqrt(dx * dx + dy * dy + dz * dz));
-                v[x + nx * (y + ny * z)] = float(ball * (0.75 + 0.25 * dx) + 0.1 * dy * dz);
+                v[x + nx * (y + ny * z)] = float(leaningBall(dx, dy, dz) + 0.1 * dy * dz);
             }
     volume->dirty();
     osg::ref_ptr<TransferFunction> tf = new TransferFunction;
@@ -76,7 +105,7 @@ osg::ref_ptr<VolumeScene> sweepScene()
     scene->addChild(mask.get());
     // Opaque geometry through a part of the volume: what the depth clip and geometry shadows read.
     osg::ref_ptr<osg::Geode> geometry = new osg::Geode;
-    geometry->addDrawable(new osg::ShapeDrawable(new osg::Box(osg::Vec3(4.5f, 0.0f, -2.0f), 3.0f, 14.0f, 1.0f)));
+    geometry->addDrawable(opaqueBox(1.0));
     scene->addChild(geometry.get());
     return scene;
 }
@@ -131,8 +160,7 @@ void resample(VolumeScene& scene, const osg::Vec3i& dims)
             for (int x = 0; x < dims.x(); ++x) {
                 const double dx = 2.0 * (x + 0.5) / dims.x() - 1.0, dy = 2.0 * (y + 0.5) / dims.y() - 1.0,
                              dz = 2.0 * (z + 0.5) / dims.z() - 1.0;
-                v[x + dims.x() * (y + dims.y() * z)] =
-                    float(std::max(0.0, 1.0 - std::sqrt(dx * dx + dy * dy + dz * dz)) * (0.75 + 0.25 * dx) + 0.5 * (dims.x() == 1));
+                v[x + dims.x() * (y + dims.y() * z)] = float(leaningBall(dx, dy, dz) + 0.5 * (dims.x() == 1));
             }
     to->dirty();
     sweepNode(scene).setVolume(to.get());
@@ -156,8 +184,7 @@ void scaleScene(VolumeScene& scene, osg::Camera& camera, double s)
             mask->mask->setSpacing(mask->mask->spacing() * s);
         } else if (auto* geode = dynamic_cast<osg::Geode*>(child)) {
             geode->removeDrawables(0, geode->getNumDrawables());
-            geode->addDrawable(new osg::ShapeDrawable(new osg::Box(osg::Vec3(4.5f, 0.0f, -2.0f) * float(s), 3.0f * float(s),
-                                                                   14.0f * float(s), 1.0f * float(s))));
+            geode->addDrawable(opaqueBox(s));
         }
     }
     placeSweepCamera(camera, s);
@@ -244,22 +271,23 @@ std::vector<Variant> variantsOf(const Composition& composition, const Compositio
 
 double largestDifference(const osg::Image& a, const osg::Image& b)
 {
-    const auto* pa = reinterpret_cast<const float*>(a.data());
-    const auto* pb = reinterpret_cast<const float*>(b.data());
-    double worst = 0.0;
-    for (std::size_t k = 0, n = std::size_t(a.s()) * std::size_t(a.t()) * 4; k < n; ++k) {
-        const double d = std::abs(double(pa[k]) - double(pb[k]));
-        worst = std::isfinite(d) ? std::max(worst, d) : HUGE_VAL;
-    }
-    return worst;
+    return largestDifferenceOf(reinterpret_cast<const float*>(a.data()), reinterpret_cast<const float*>(b.data()),
+                               std::size_t(a.s()) * std::size_t(a.t()) * 4);
 }
+
+namespace {
+
+/// Whether `model` (an implementation's declaration, null: none) is one the reference computes.
+bool hasModel(const ReferenceModel* model) { return model && model->fidelity != ReferenceModel::Fidelity::None; }
+
+}  // namespace
 
 OracleBound oracleBound(const Composition& composition)
 {
     OracleBound verdict{true, oracleBase, {}};
     auto account = [&](const std::string& slot, const std::string& name) {
         const ReferenceModel* model = ReferenceModelCatalog::instance().find(slot, name);
-        if (verdict.modelled && (!model || model->fidelity == ReferenceModel::Fidelity::None)) {
+        if (verdict.modelled && !hasModel(model)) {
             verdict.modelled = false;
             verdict.why = slot + " " + name + ": " + (model ? model->why : std::string("declares no reference model"));
         }
@@ -275,18 +303,12 @@ OracleBound oracleBound(const Composition& composition)
     return verdict;
 }
 
-bool modelledValue(const std::string& factor, const std::string& value)
+bool modelledValue(const std::string& factor, const std::vector<std::string>& names)
 {
     if (factor == "lights") return true;
-    auto modelled = [&](const std::string& name) {
-        const ReferenceModel* model = ReferenceModelCatalog::instance().find(factor, name);
-        return model && model->fidelity != ReferenceModel::Fidelity::None;
-    };
-    if (value.empty() || value.front() != '[') return modelled(value);
-    std::stringstream names(value.substr(1, value.size() - 2));
-    for (std::string name; std::getline(names, name, ',');)
-        if (!name.empty() && !modelled(name)) return false;
-    return true;
+    return std::all_of(names.begin(), names.end(), [&](const std::string& name) {
+        return hasModel(ReferenceModelCatalog::instance().find(factor, name));
+    });
 }
 
 SweepOracle::SweepOracle(VolumeScene& scene, const osg::Matrixd& view, const osg::Matrixd& projection, int width,
@@ -328,13 +350,8 @@ const ReferenceImage& SweepOracle::image(const Composition& composition)
 
 double SweepOracle::largestDifference(const osg::Image& gpu, const ReferenceImage& reference)
 {
-    const auto* p = reinterpret_cast<const float*>(gpu.data());
-    double worst = 0.0;
-    for (std::size_t k = 0, n = std::size_t(gpu.s()) * std::size_t(gpu.t()) * 4; k < n; ++k) {
-        const double d = std::abs(double(p[k]) - reference.rgba[k]);
-        worst = std::isfinite(d) ? std::max(worst, d) : HUGE_VAL;
-    }
-    return worst;
+    return largestDifferenceOf(reinterpret_cast<const float*>(gpu.data()), reference.rgba.data(),
+                               std::size_t(gpu.s()) * std::size_t(gpu.t()) * 4);
 }
 
 namespace {

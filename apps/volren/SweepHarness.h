@@ -116,7 +116,7 @@ OracleBound oracleBound(const Composition& composition);
 
 /// Whether a factor value of the permutation space (PermutationSpace::ValueFilter) has a
 /// reference model: each implementation it names declares one (not Fidelity::None).
-bool modelledValue(const std::string& factor, const std::string& value);
+bool modelledValue(const std::string& factor, const std::vector<std::string>& names);
 
 /// The CPU reference of the sweep scene as each composition draws it (the chosen implementations'
 /// lighting models and shadows, only the clip shapes its instances bind, the opaque geometry's

@@ -1,6 +1,8 @@
 #pragma once
 #include <volume_model/RenderSettings.h>
 
+#include <osg/Vec3i>
+
 #include <cstddef>
 #include <string>
 
@@ -24,6 +26,10 @@ void recordGraphicsLimits(int largest3DTexture, std::size_t dedicatedMemory);
 
 /// The recorded largest 3D texture edge, or 2048 (what every OpenGL 4.5 driver allows).
 int largest3DTexture();
+
+/// Whether a 3D texture of `dims` texels is larger than largest3DTexture() along some axis (OSG
+/// would shrink its image silently).
+bool exceedsLargest3DTexture(const osg::Vec3i& dims);
 
 /// GPU bytes one volume's voxels may take: memoryBudgetMB when set, else half the recorded
 /// dedicated memory, else 2 GiB.

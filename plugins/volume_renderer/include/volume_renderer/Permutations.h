@@ -23,9 +23,10 @@ public:
     std::size_t size() const { return _size; }
     /// Valid composition `index` (0 <= index < size()).
     Composition at(std::size_t index) const;
-    /// Whether a factor's value may be taken: (factor, value) as a composition key spells them
-    /// ("Reconstruction", "trilinear"; "ClipPosition", "[box,plane]"; "lights", "1").
-    using ValueFilter = std::function<bool(const std::string& factor, const std::string& value)>;
+    /// Whether a factor's value may be taken, given the factor's name and what the value names:
+    /// the implementation of an ordinary slot ({"trilinear"}), the instances of a template slot
+    /// ({"box", "plane"}; none for no instance), the light count ({"1"}).
+    using ValueFilter = std::function<bool(const std::string& factor, const std::vector<std::string>& names)>;
     /// Indices of a covering subset: every pair of factor values (slot choices, clip instance
     /// lists, light counts) that occurs in some valid composition occurs in one of these. With
     /// `allowed`, of the compositions whose every value it allows (their pairs covered).

@@ -227,8 +227,11 @@ std::vector<std::size_t> PermutationSpace::pairwiseCover(const ValueFilter& allo
     std::vector<char> allowedValue(values, 1);  // per factor value
     if (allowed)
         for (std::size_t i = 0; i < n; ++i)
-            for (std::size_t a = 0; a < _factors[i].values.size(); ++a)
-                allowedValue[offset[i] + a] = allowed(_factors[i].name, _factors[i].values[a]);
+            for (std::size_t a = 0; a < _factors[i].values.size(); ++a) {
+                const std::string& value = _factors[i].values[a];  // "[a,b]" for a template slot's instances
+                allowedValue[offset[i] + a] =
+                    allowed(_factors[i].name, value.front() == '[' ? parseList(value) : std::vector<std::string>{value});
+            }
     auto inSubspace = [&](const std::vector<std::uint8_t>& v) {
         for (std::size_t i = 0; i < n; ++i)
             if (!allowedValue[offset[i] + v[i]]) return false;

@@ -6,6 +6,7 @@
 #include <volume_renderer/BrickPool.h>
 #include <volume_renderer/GraphicsDriver.h>
 #include <volume_renderer/SampleDistance.h>
+#include <volume_renderer/VolumeMipChain.h>
 #include <volume_renderer/ShaderCompositor.h>
 #include <volume_renderer/ShaderFunctionRegistry.h>
 
@@ -59,13 +60,10 @@ void registerVolumeStorageFunctions(ShaderFunctionRegistry& registry)
                              const BindContext& c = r.context;
                              // OSG would shrink a larger image silently: a clear error instead
                              // (the policy chooses bricks for such volumes; this is a forced choice).
-                             const osg::Vec3i& d = c.volume.dims();
-                             const int x = std::max(1, d.x() >> c.lod), y = std::max(1, d.y() >> c.lod),
-                                       z = std::max(1, d.z() >> c.lod);
-                             if (std::max({x, y, z}) > largest3DTexture())
+                             if (const osg::Vec3i d = mipDims(c.volume.dims(), c.lod); exceedsLargest3DTexture(d))
                                  throw std::runtime_error(
-                                     "VolumeStorage texture: volume '" + c.node.getName() + "' is " + std::to_string(x) + "x" +
-                                     std::to_string(y) + "x" + std::to_string(z) + " texels at level " + std::to_string(c.lod) +
+                                     "VolumeStorage texture: volume '" + c.node.getName() + "' is " + std::to_string(d.x()) + "x" +
+                                     std::to_string(d.y()) + "x" + std::to_string(d.z()) + " texels at level " + std::to_string(c.lod) +
                                      ", beyond this driver's largest 3D texture (" + std::to_string(largest3DTexture()) +
                                      "): choose VolumeStorage bricked (--set volumeStorage=bricked)");
                              return r.textures.volume(c.volume, false, r.cull, c.lod, wideTexels(c));

@@ -1,5 +1,6 @@
 #include <volume_renderer/GraphicsDriver.h>
 
+#include <algorithm>
 #include <atomic>
 #include <mutex>
 
@@ -43,6 +44,11 @@ int largest3DTexture()
 {
     const int recorded = largest3D;
     return recorded > 0 ? recorded : 2048;
+}
+
+bool exceedsLargest3DTexture(const osg::Vec3i& dims)
+{
+    return std::max({dims.x(), dims.y(), dims.z()}) > largest3DTexture();
 }
 
 std::size_t volumeMemoryBudget(const RenderSettings& settings)

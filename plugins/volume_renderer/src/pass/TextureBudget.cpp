@@ -15,7 +15,7 @@ bool exceedsTextureBudget(const VolumeNode& node, int lod, bool coarseByteFilter
     const std::string& precision = node.settings.texturePrecision;
     const bool wide = voxelSize(volume.type()) == 1 && (precision == "16bit" || (precision == "auto" && coarseByteFiltering));
     const std::size_t bytes = std::size_t(d.x()) * std::size_t(d.y()) * std::size_t(d.z()) * (wide ? 2 : voxelSize(volume.type()));
-    return bytes > volumeMemoryBudget(node.settings) || std::max({d.x(), d.y(), d.z()}) > largest3DTexture();
+    return bytes > volumeMemoryBudget(node.settings) || exceedsLargest3DTexture(d);
 }
 
 }  // namespace volren
