@@ -8,6 +8,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -98,6 +99,11 @@ public:
     bool isValid(const Composition& composition) const { return invalidReason(composition).empty(); }
     /// The same rules on resolved implementations (fast: sweeps check millions of candidates).
     bool isValid(const SlotFunctions& chosen, unsigned int lightCount) const;
+    /// Whether `chosen` obeys every rule but the light count's, and then how many lights it may
+    /// take (lightCountFits); nullopt when no light count makes it valid. One check for all counts.
+    std::optional<LightUse> validWithLights(const SlotFunctions& chosen) const;
+    /// Whether a composition whose Shading uses lights as `use` may take `lightCount` of them.
+    static bool lightCountFits(LightUse use, unsigned int lightCount);
 
     /// Whether a volume drawn with `composition` may share a ray with overlapping volumes.
     bool canShareRay(const Composition& composition) const { return !memberKind(composition).empty(); }
@@ -141,8 +147,8 @@ private:
     bool skippingFits(const Composition& c, const ShaderFunction& acceleration) const;
 
     struct Rules;
-    bool check(const SlotFunctions& chosen, unsigned int lightCount, bool inSet,
-               const std::function<void(const std::string&)>* fail) const;
+    std::optional<LightUse> check(const SlotFunctions& chosen, bool inSet,
+                                  const std::function<void(const std::string&)>* fail) const;
 
     const ShaderFunctionRegistry& _registry;
     std::shared_ptr<const Rules> _rules;  ///< the traits as slot bit masks, per implementation

@@ -5,6 +5,7 @@
 #include <functional>
 #include <iterator>
 #include <limits>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -138,8 +139,9 @@ PermutationSpace::PermutationSpace(const ShaderFunctionRegistry& registry, unsig
         for (std::size_t i = 0; i < slotCount; ++i) chosen[i] = functions[i][choice[i]];
         std::uint64_t rank = 0;
         for (std::size_t i = 0; i < slotCount; ++i) rank += choice[i] * weight[i];
-        for (std::size_t n = 0; n < _factors.back().values.size(); ++n)
-            if (_policy.isValid(chosen, unsigned(n))) byLights[n].push_back(rank + n * weight.back());
+        if (const std::optional<LightUse> use = _policy.validWithLights(chosen))
+            for (std::size_t n = 0; n < _factors.back().values.size(); ++n)
+                if (CompositionPolicy::lightCountFits(*use, unsigned(n))) byLights[n].push_back(rank + n * weight.back());
     };
     // Segments in index order: light count first (the most significant factor), then RaySetup.
     std::vector<std::vector<Segment>> segments(byLights.size());
