@@ -1,5 +1,6 @@
 #include "SweepHarness.h"
 
+#include <volume_renderer/LoopBudget.h>
 #include <volume_renderer/ShaderFunctionRegistry.h>
 #include <volume_renderer/Slots.h>
 
@@ -210,7 +211,17 @@ std::vector<SweepVariant> sweepVariants(bool extremes)
     variants.push_back({.name = "TF opacity 0", .showsVolume = false,
                         .apply = [](VolumeScene& s, osg::Camera&) { opacityEverywhere(s, 0.0f); }});
     add("TF opacity 1", [](VolumeScene& s, osg::Camera&) { opacityEverywhere(s, 1.0f); });
-    add("steps of 1/1000 voxel", [](VolumeScene& s, osg::Camera&) { sweepNode(s).settings.sampleDistanceFactor = 0.001; });
+    variants.push_back({.name = "steps of 1/1000 voxel",
+                        .apply = [](VolumeScene& s, osg::Camera&) { sweepNode(s).settings.sampleDistanceFactor = 0.001; },
+                        // 35,100 view samples through the ball, and with shadow rays at least a light
+                        // loop's and a march's iteration more per sample: over 100,000 iterations a
+                        // pixel, beyond a driver that ends a pixel's loops after 65,535 (llvmpipe).
+                        .refuses =
+                            [](const Composition& c) {
+                                return loopIterationLimit() > 0 && loopIterationLimit() < 100000 &&
+                                       c.functionFor("Shadowing") == "ray" && c.lightCount > 0;
+                            },
+                        .refusal = "loop iterations per pixel"});
     add("spacing 1e-9", [](VolumeScene& s, osg::Camera& c) { scaleScene(s, c, 2e-9); });
     add("spacing 1e12", [](VolumeScene& s, osg::Camera& c) { scaleScene(s, c, 2e12); });
     add("1x1x1 volume", [](VolumeScene& s, osg::Camera&) { resample(s, {1, 1, 1}); });

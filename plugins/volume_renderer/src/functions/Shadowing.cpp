@@ -5,6 +5,7 @@
 #include "../resources/OpacityMipChain.h"
 
 #include <volume_renderer/CompositionPolicy.h>
+#include <volume_renderer/LoopBudget.h>
 #include <volume_renderer/ShaderFunctionRegistry.h>
 
 #include <volume_model/RenderSettings.h>
@@ -177,7 +178,9 @@ void registerShadowingFunctions(ShaderFunctionRegistry& registry)
                       [](BindContext& c) {
                           bindings::bindGeometry(c);
                           bindGeometryShadows(c);
-                          c.uniform("volren_shadowStep", float(c.sampleDistance * c.settings.number("shadowStepFactor")));
+                          // On llvmpipe every view sample's march shares one loop budget per pixel.
+                          const double step = c.sampleDistance * c.settings.number("shadowStepFactor");
+                          c.uniform("volren_shadowStep", float(shadowStepWithinLoopLimit(c, step)));
                           c.uniform("volren_referenceStep", float(c.volume.minSpacing()));
                           const double cutoff = c.settings.number("shadowCutoff");
                           c.uniform("volren_shadowCutoffDepth", float(cutoff > 0.0 ? -std::log(cutoff) : 1e30));

@@ -2,6 +2,7 @@
 
 #include "../compositor/BuildSlots.h"
 
+#include <volume_renderer/LoopBudget.h>
 #include <volume_renderer/SampleDistance.h>
 #include <volume_renderer/VolumeMipChain.h>
 
@@ -119,6 +120,7 @@ bool bindProgram(BindContext& context, const ComposedProgram& program,
             textures.builtVolumes().texture(&context.node, *kind, build.dims(levelDims, context), build.channels(context), cull);
     }
 
+    checkViewRayWithinLoopLimit(context);  // the step is final: a brick pool may have coarsened it
     static const std::vector<ClipInfo> none;
     for (const Binding* b : mine) {
         if (!b->function->bind) continue;

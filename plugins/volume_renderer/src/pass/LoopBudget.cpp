@@ -1,0 +1,96 @@
+#include <volume_renderer/BindContext.h>
+#include <volume_renderer/GraphicsDriver.h>
+#include <volume_renderer/LoopBudget.h>
+
+#include <volume_model/Volume.h>
+#include <volume_model/VolumeNode.h>
+
+#include <osg/Notify>
+
+#include <algorithm>
+#include <cmath>
+#include <mutex>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace volren {
+
+namespace {
+
+/// Most steps one shadow march takes, whatever its step (Shadowing/ray.glsl's cap).
+constexpr double maxShadowSteps = 16384.0;
+/// Part of the limit a march may plan for: the rest is left to the loops it does not count
+/// (a leap's inner loop, a tricubic or central-9 gradient's taps).
+constexpr double plannedShare = 0.9;
+
+std::string volumeName(const BindContext& context)
+{
+    return "'" + context.node.getName() + "'";
+}
+
+}  // namespace
+
+long loopIterationLimit()
+{
+    return graphicsDriver().find("llvmpipe") != std::string::npos ? 65535 : 0;
+}
+
+double viewSamplesPerRay(const BindContext& context)
+{
+    const osg::Vec3d box = context.boxSize.length2() > 0.0 ? context.boxSize : context.volume.worldSize();
+    return std::ceil(box.length() / context.sampleDistance) + 1.0;
+}
+
+void checkViewRayWithinLoopLimit(const BindContext& context)
+{
+    const long limit = loopIterationLimit();
+    if (limit == 0 || !(context.sampleDistance > 0.0)) return;
+    const double samples = viewSamplesPerRay(context);
+    if (samples <= plannedShare * double(limit)) return;
+    std::ostringstream why;
+    why << "volume " << volumeName(context) << ": a ray through its box may take " << samples
+        << " samples at a step of " << context.sampleDistance << " world units, and this driver (" << graphicsDriver()
+        << ") ends a pixel's loops after " << limit
+        << " iterations, so the march would stop short: choose a lower samplerate (or a longer sampleDistance)";
+    throw std::runtime_error(why.str());
+}
+
+double shadowStepWithinLoopLimit(const BindContext& context, double step)
+{
+    const long limit = loopIterationLimit();
+    if (limit == 0 || !(step > 0.0) || !(context.sampleDistance > 0.0)) return step;
+    const osg::Vec3d box = context.boxSize.length2() > 0.0 ? context.boxSize : context.volume.worldSize();
+    const double diagonal = box.length();
+    const double view = viewSamplesPerRay(context);
+    const double lights = double(std::max<std::size_t>(1, context.lights.size()));
+    // Per view sample: its own iteration, and per light one of the light loop and the march's.
+    auto perPixel = [&](double shadowSteps) { return view * (1.0 + lights * (1.0 + shadowSteps)); };
+    const double budget = plannedShare * double(limit);
+    const double wanted = std::min(maxShadowSteps, std::ceil(diagonal / step));
+    if (perPixel(wanted) <= budget) return step;
+    const double fitting = std::floor((budget / view - 1.0) / lights - 1.0);
+    if (fitting < 1.0) {
+        std::ostringstream why;
+        why << "Shadowing ray: volume " << volumeName(context) << ": " << view << " view samples per ray times "
+            << lights << " light(s) take more than this driver's " << limit << " loop iterations per pixel ("
+            << graphicsDriver() << ") with even one shadow step per sample: choose a lower samplerate or "
+            << "another shadowing (light_volume, cone)";
+        throw std::runtime_error(why.str());
+    }
+    const double lengthened = diagonal / fitting;
+    static std::mutex told;
+    static std::set<std::pair<std::string, double>> warned;
+    const std::lock_guard<std::mutex> lock(told);
+    if (warned.insert({context.node.getName(), lengthened}).second)
+        OSG_WARN << "volren: volume " << volumeName(context) << ": shadow rays step " << lengthened
+                 << " world units, not " << step << " (shadowStepFactor " << step / context.sampleDistance << " -> "
+                 << lengthened / context.sampleDistance << "): " << view << " view samples per ray and "
+                 << lights << " light(s) must stay within this driver's " << limit << " loop iterations per pixel"
+                 << std::endl;
+    return lengthened;
+}
+
+}  // namespace volren
