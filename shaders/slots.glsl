@@ -6,7 +6,8 @@
 
 // RaySetup: owns main(); builds this fragment's ray, calls the slots below, writes volren_fragColor.
 
-// Reconstruction: the GL texel value (normalised stored scalar) at pos.
+// Reconstruction: the GL texel value (normalised stored scalar) at pos. With the pass's debug
+// output of sample counts (VOLREN_COUNT_SAMPLES) each call adds one to volren_sampleCount.
 float volren_fetchScalar(vec3 pos);
 
 // VolumeStorage: where the voxels of the sampled level live (one 3D texture, or bricks in a

@@ -57,4 +57,7 @@ void volren_castRay(vec3 origin, vec3 dir, float tNear, float tFar)
         gl_FragDepth = gl_FragCoord.z;
     }
     volren_fragColor = color;
+#ifdef VOLREN_COUNT_SAMPLES
+    volren_fragColor = vec4(float(volren_sampleCount), 0.0, 0.0, 1.0);  // the pass's debug output
+#endif
 }

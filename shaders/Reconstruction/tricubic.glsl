@@ -4,6 +4,9 @@
 // float volren_fetchScalar(vec3 pos)
 float volren_fetchScalar(vec3 pos)
 {
+#ifdef VOLREN_COUNT_SAMPLES
+    ++volren_sampleCount;
+#endif
     vec3 x = pos * volren_dims - 0.5;
     vec3 index = floor(x);
     vec3 f = x - index;

@@ -3,5 +3,8 @@
 // float volren_fetchScalar(vec3 pos)
 float volren_fetchScalar(vec3 pos)
 {
+#ifdef VOLREN_COUNT_SAMPLES
+    ++volren_sampleCount;
+#endif
     return volren_volumeSample(pos);
 }

@@ -4,6 +4,12 @@
 // use their series, which need no library accuracy: degree 8 on |x| <= 1/8 keeps the relative
 // error below 1e-9; larger arguments are far enough from 1 for log/exp themselves.
 
+#ifdef VOLREN_COUNT_SAMPLES
+// The pass's debug output of sample counts: every Reconstruction call of this invocation, one
+// counter for all members of a multi-volume set (RaySetup/ray.glsl writes it out).
+int volren_sampleCount = 0;
+#endif
+
 float volren_log1p(float x)
 {
     if (abs(x) > 0.125) return log(1.0 + x);

@@ -87,6 +87,29 @@ protected:
         return {skipping, full};
     }
 
+    /// The samples the scene's rays reconstruct, summed over the image drawn by `draw`, with the
+    /// node's Acceleration as chosen (checked to be `expected`) and forced null: the pass's
+    /// countSamples debug output, which writes each pixel's count into red.
+    template <typename Render>
+    static std::pair<Pixels, Pixels> countsWithAndWithout(VolumeNode* node, VolumeScene* scene, Render draw,
+                                                          const std::string& expected = "occupancy")
+    {
+        scene->pass.countSamples = true;
+        auto counts = withAndWithout(node, scene, draw, expected);
+        scene->pass.countSamples = false;
+        return counts;
+    }
+
+    /// The samples of every ray of a countSamples image: the sum of red over the pixels rays
+    /// wrote (green and blue 0; the rest show the background).
+    static double samples(const Pixels& counts)
+    {
+        double sum = 0.0;
+        for (const osg::Vec4& c : counts.rgba)
+            if (c.g() == 0.0f && c.b() == 0.0f) sum += c.r();
+        return sum;
+    }
+
     /// The Acceleration the scene chose for its first volume in the last frame.
     static std::string chosenAcceleration(VolumeScene* scene)
     {

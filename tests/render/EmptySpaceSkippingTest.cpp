@@ -8,6 +8,7 @@
 #include "TestData.h"
 
 #include <volume_renderer/MacrocellGrid.h>
+#include <volume_renderer/SampleDistance.h>
 #include <volume_renderer/VolumeScene.h>
 
 #include <volume_model/ReadVolume.h>
@@ -156,6 +157,21 @@ TEST_F(EmptySpaceSkipping, AHomogeneousBlockInAnEmptyBoxIsBitIdenticalAndMatches
     const double expected = 1.0 - std::pow(0.9, 10.0);
     EXPECT_NEAR(skipping.at(15, 16).a(), expected, 2e-3);
     EXPECT_EQ(skipping.at(3, 3).a(), 0.0f) << "beside the block nothing is visible";
+
+    // And it takes fewer samples: without skipping every ray takes one per step through the
+    // 32 voxels (the closed form); with it, a ray beside the block's macrocells leaps the whole
+    // box, and one through it samples the block's 10 voxels and the rest of its cells (measured:
+    // 32 of 64 samples; 16,384 of 65,536 over the image).
+    const auto [counted, every] =
+        countsWithAndWithout(node.get(), scene.get(), [&] { return renderOrthoFromPlusZ(scene.get(), 32, 32, 32.0); });
+    const double perRay = std::ceil(32.0 / effectiveSampleDistance(*node));
+    EXPECT_EQ(every.at(3, 3).r(), perRay);
+    EXPECT_EQ(every.at(15, 16).r(), perRay);
+    EXPECT_EQ(samples(every), perRay * 32 * 32);
+    EXPECT_LT(counted.at(3, 3).r(), 0.1 * perRay) << "an empty ray leaps the box";
+    EXPECT_GE(counted.at(15, 16).r(), std::floor(10.0 / effectiveSampleDistance(*node))) << "the block is sampled";
+    EXPECT_LT(counted.at(15, 16).r(), 0.6 * perRay);
+    EXPECT_LE(samples(counted), 0.25 * samples(every));
 }
 
 TEST_F(EmptySpaceSkipping, AOneVoxelPlaneIsNeverSkippedAtAnyMacrocellSize)
@@ -307,6 +323,13 @@ TEST_F(EmptySpaceSkipping, ProjectionsAndIsosurfacesLeapWhatCannotPassTheirLevel
                 EXPECT_TRUE(identical(skipping, full)) << traversal << " " << reconstruction << " cells of " << size
                                                        << ": max difference " << maxDifference(skipping, full);
                 EXPECT_GT(covered(skipping), std::string(traversal) == "isosurface" ? 20 : 800) << traversal;
+                // The leaps save samples: the counts (the pass's debug output) with and without.
+                const auto [counted, every] =
+                    countsWithAndWithout(node.get(), scene.get(), [&] { return oblique(scene.get()); }, "range");
+                // (Measured: 2-11 % fewer; the rough medium leaves little to leap before the extremum.)
+                EXPECT_LT(samples(counted), 0.99 * samples(every))
+                    << traversal << " " << reconstruction << " cells of " << size << ": " << samples(counted) << " of "
+                    << samples(every) << " samples";
             }
 }
 

@@ -20,6 +20,11 @@ struct PassSettings
     bool streamBricks = false;
     /// Megabytes of bricks a streaming frame uploads at most.
     double uploadBudgetMB = 64.0;
+    /// A debug output: each pixel's red channel holds the number of samples its ray reconstructed
+    /// (every Reconstruction call: the view ray's, its gradients' and shadows'), green and blue 0,
+    /// alpha 1, instead of its colour. What empty-space skipping saves, counted (exact in float
+    /// targets up to 2^24).
+    bool countSamples = false;
 
     /// Sets a pass setting by name (`lighting`, `forceNullAll`); false with `error` set when the
     /// key is not a pass setting or the value is bad.

@@ -138,6 +138,11 @@ ChosenComposition CompositionPolicy::choose(const RenderSettings& settings, cons
             for (const auto& [name, value] : options.defines) c.defines[name] = value;
             c.keyFragments += options.keyFragment;
         }
+    // The pass's debug output of sample counts: a macro of the whole program, no implementation's.
+    if (pass.countSamples) {
+        c.defines["VOLREN_COUNT_SAMPLES"] = "1";
+        c.keyFragments += "countSamples=on;";
+    }
     return out;
 }
 

@@ -114,6 +114,13 @@ std::string ProgramAssembly::header() const
         }
     };
     defines(_composition, -1, "");
+    // Macros the pass sets for the whole program, which no implementation declares
+    // (PassSettings::countSamples: VOLREN_COUNT_SAMPLES).
+    std::set<std::string> declared;
+    for (const Binding& b : _result.bindings)
+        for (const auto& define : b.function->defines) declared.insert(define.first);
+    for (const auto& [name, value] : _composition.defines)
+        if (!declared.count(name)) src << "#define " << name << " " << value << "\n";
     if (!_composition.members.empty()) src << "#define VOLREN_MEMBER_COUNT " << _composition.members.size() << "\n";
     for (std::size_t k = 0; k < _composition.members.size(); ++k) {
         const unsigned int lights = _composition.members[k].lightCount;

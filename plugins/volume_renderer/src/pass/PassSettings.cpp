@@ -14,7 +14,9 @@ std::vector<std::pair<std::string, std::string>> PassSettings::keys()
             {"forceNullAll", "comma-separated slots forced to null for every volume"},
             {"streamBricks", "on/off: bricked volumes draw what is loaded while loader threads read the rest (off: "
                              "every frame waits for its bricks)"},
-            {"uploadBudgetMB", "megabytes of bricks a streaming frame uploads at most (> 0)"}};
+            {"uploadBudgetMB", "megabytes of bricks a streaming frame uploads at most (> 0)"},
+            {"countSamples", "on/off: on writes each pixel's number of reconstructed samples into red (alpha 1) "
+                             "instead of its colour, a debug output of what skipping saves"}};
 }
 
 bool PassSettings::isKey(const std::string& key)
@@ -28,6 +30,7 @@ std::string PassSettings::get(const std::string& key) const
 {
     if (key == "lighting") return lighting ? "on" : "off";
     if (key == "streamBricks") return streamBricks ? "on" : "off";
+    if (key == "countSamples") return countSamples ? "on" : "off";
     if (key == "uploadBudgetMB") {
         char text[32];  // the shortest text that reads back as the value
         return std::string(text, std::to_chars(text, text + sizeof(text), uploadBudgetMB).ptr);
@@ -51,6 +54,11 @@ bool PassSettings::set(const std::string& key, const std::string& value, std::st
         if (value == "on" || value == "1" || value == "true") return streamBricks = true, true;
         if (value == "off" || value == "0" || value == "false") return streamBricks = false, true;
         return error = "streamBricks must be on or off, got '" + value + "'", false;
+    }
+    if (key == "countSamples") {
+        if (value == "on" || value == "1" || value == "true") return countSamples = true, true;
+        if (value == "off" || value == "0" || value == "false") return countSamples = false, true;
+        return error = "countSamples must be on or off, got '" + value + "'", false;
     }
     if (key == "uploadBudgetMB") {
         double v = 0.0;
