@@ -116,6 +116,16 @@ TEST_F(AdaptiveSampling, AHomogeneousBlockMatchesItsClosedFormAndTheExactMarch)
             adaptiveAndExact(node.get(), alongZ.get(), [&] { return renderOrthoFromPlusZ(alongZ.get(), 32, 32, 32.0); });
         EXPECT_NEAR(adaptive.at(15, 16).a(), 1.0 - std::pow(0.9, 16.0), 2e-3);
         EXPECT_LT(maxDifference(adaptive, exact), 1e-5);
+        // With fewer samples (the pass's countSamples debug output): the exact march samples
+        // every half-voxel step of the occupied cells, the adaptive one a sample per run of up
+        // to 8 steps in the cells whose apron stays inside the block (measured: 36 of 48 on the
+        // centre ray, 46,080 of 49,152 over the image).
+        alongZ->pass.countSamples = true;
+        const auto [merged, every] =
+            adaptiveAndExact(node.get(), alongZ.get(), [&] { return renderOrthoFromPlusZ(alongZ.get(), 32, 32, 32.0); });
+        alongZ->pass.countSamples = false;
+        EXPECT_LE(merged.at(15, 16).r(), every.at(15, 16).r() - 8.0f);
+        EXPECT_LT(samples(merged), 0.97 * samples(every));
     }
     osg::ref_ptr<VolumeScene> scene = sceneOf(node.get());
     osg::ref_ptr<osg::LightSource> light = new osg::LightSource;
