@@ -83,6 +83,7 @@ struct SweepOptions
     bool list = false, compile = false, render = false, pairwise = false, check = true;
     bool modelled = false;  ///< only compositions whose every implementation has a reference model
     bool extremes = false;  ///< every composition also on the sweep scene's parameter extremes
+    std::string variant;    ///< only the scene variants whose name holds this text (with --extremes)
     std::string sceneName;  ///< the scene variant being drawn (empty: the plain sweep scene)
     SweepLimits limits;
     unsigned int maxInstances = 1, maxLights = 1;
@@ -124,6 +125,7 @@ SweepOptions parseSweepOptions(const std::vector<std::string>& args)
         else if (args[i] == "--pairwise") o.pairwise = true;
         else if (args[i] == "--modelled") o.modelled = true;
         else if (args[i] == "--extremes") o.extremes = true;
+        else if (args[i] == "--variant") o.variant = text(i, "--variant needs a part of a variant's name");
         else if (args[i] == "--max-instances") o.maxInstances = unsigned(number(i, "--max-instances"));
         else if (args[i] == "--max-lights") o.maxLights = unsigned(number(i, "--max-lights"));
         else if (args[i] == "--first") o.first = number(i, "--first");
@@ -144,6 +146,7 @@ SweepOptions parseSweepOptions(const std::vector<std::string>& args)
     }
     if (o.maxInstances > 3 || o.maxLights > 4) throw UsageError("--max-instances is at most 3 and --max-lights at most 4");
     if (!o.dumpDir.empty() && !o.render) throw UsageError("--dump needs --render");
+    if (!o.variant.empty() && !o.extremes) throw UsageError("--variant needs --extremes");
     return o;
 }
 
@@ -350,6 +353,7 @@ int permutationsCommand(const std::vector<std::string>& args)
     double referenceSeconds = 0.0;
     // Each scene variant (only the plain sweep scene unless --extremes) draws every composition.
     for (const SweepVariant& variant : sweepVariants(o.render && o.extremes)) {
+        if (!o.variant.empty() && variant.name.find(o.variant) == std::string::npos) continue;
         OffscreenRenderer renderer(variant.width, variant.height);
         osg::ref_ptr<VolumeScene> scene = sweepScene();
         scene->compositor().setCacheSize(0);  // a sweep never returns to a composition: keep none

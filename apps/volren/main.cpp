@@ -65,6 +65,7 @@ const std::vector<std::pair<std::string, std::string>>& commandUsages()
          "                [--extremes]   (with --render: each composition also on the sweep scene at parameter\n"
          "                extremes: 8/16-bit data, NaN voxels, opacity 0 and 1, steps of 1/1000 voxel, spacings\n"
          "                1e-9 and 1e12, 1x1x1 and 4096x4x4 volumes, the camera inside, 1x1 and 4096x4 views)\n"
+         "                [--variant TEXT]   (with --extremes: only the variants whose name holds TEXT)\n"
          "                [--no-check] [--time-limit MS]   (--render checks each frame: composing, compile\n"
          "                and link, GL errors, finite pixels, the volume drawn, the frame's time; it exits 1\n"
          "                and prints 'FAILED <key>: <check>: <measured>' for each failed check)\n"},

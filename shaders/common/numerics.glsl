@@ -47,7 +47,8 @@ float volren_opacityFromDepth(float tau)
 vec3 volren_normalFromGradient(vec3 gradient, vec3 viewDir)
 {
     float scale = max(max(abs(gradient.x), abs(gradient.y)), abs(gradient.z));
-    if (!(scale > 1e-30) || isinf(scale)) return viewDir;
+    // (max() may pass over a NaN component: a NaN voxel among the gradient's taps.)
+    if (any(isnan(gradient)) || !(scale > 1e-30) || isinf(scale)) return viewDir;
     vec3 n = -normalize(gradient / scale);  // normals point from dense to empty
     return dot(n, viewDir) < 0.0 ? -n : n;
 }

@@ -277,6 +277,35 @@ TEST_F(NumericalExtremes, ZeroGradientsUnderLightingFaceTheViewer)
     }
 }
 
+TEST_F(NumericalExtremes, NaNVoxelsUnderLightingShadeTheirNeighboursAsAZeroGradient)
+{
+    // NaN voxels in a lit float ramp. A sample interpolated from one is NaN (empty); a sample
+    // whose gradient taps read one has a NaN gradient, which tells nothing of a boundary: its
+    // normal is the view direction and lighting_surface leaves it unlit, in both renderers. (Until
+    // 2026-12-07 max() passed over the NaN component in both, and the normal came out NaN:
+    // the GPU's pixel went black, the reference's went NaN: 0.068 apart.) Samples at a quarter
+    // voxel from the voxel centres keep every interpolation weight away from 0. The NaN voxels
+    // are two voxels from the border or more: one at y = 1 makes the two renderers' opacity
+    // differ by 0.012 on the border row, with or without lighting (not understood yet).
+    osg::ref_ptr<Volume> v = rampAlongZ(VoxelType::Float32, {8, 8, 16}, 0.0, 1.0);
+    auto* f = reinterpret_cast<float*>(v->data());
+    for (const osg::Vec3i& at : {osg::Vec3i(4, 4, 8), osg::Vec3i(2, 5, 11), osg::Vec3i(5, 2, 4)})
+        f[(at.z() * 8 + at.y()) * 8 + at.x()] = std::numeric_limits<float>::quiet_NaN();
+    v->dirty();
+    for (const char* shading : {"null", "lighting", "lighting_surface"}) {
+        osg::ref_ptr<VolumeNode> node = exactNode(v.get(), rampTf(0.0, 1.0, 0.3f).get());
+        node->settings.functions["Shading"] = shading;
+        node->settings.functions["Illumination"] = "lambert";
+        osg::ref_ptr<VolumeScene> scene = new VolumeScene;
+        scene->addChild(node.get());
+        osg::ref_ptr<osg::LightSource> light = new osg::LightSource;
+        light->getLight()->setPosition(osg::Vec4(0.3f, -0.4f, 1.0f, 0.0f));
+        scene->addChild(light.get());
+        const double worst = worstAgainstReference(scene.get(), orthoCamera(16, 8.0));
+        EXPECT_LT(worst, 2e-3) << shading;
+    }
+}
+
 TEST_F(NumericalExtremes, OneByOneAndHugeViewports)
 {
     auto node = exactNode(constantVolume(VoxelType::UInt8, {8, 8, 8}, 100).get(),

@@ -23,7 +23,9 @@ glm::dvec3 Medium::shade(const glm::dvec3& tc, const glm::dvec3& local, const gl
     const double scale = std::max({std::abs(gradient.x), std::abs(gradient.y), std::abs(gradient.z)});
     // A gradient too small for a direction (as the GPU's volren_normalFromGradient: largest
     // component <= 1e-30), infinite or NaN: the view direction.
-    glm::dvec3 normal = scale > 1e-30 && std::isfinite(scale) ? -glm::normalize(gradient / scale) : view;
+    // (std::max may pass over a NaN component: a NaN voxel among the gradient's taps.)
+    const bool nan = std::isnan(gradient.x) || std::isnan(gradient.y) || std::isnan(gradient.z);
+    glm::dvec3 normal = !nan && scale > 1e-30 && std::isfinite(scale) ? -glm::normalize(gradient / scale) : view;
     if (glm::dot(normal, view) < 0.0) normal = -normal;  // two-sided: normals face the viewer
     glm::dvec3 colour = ambient * albedo;
     if (occlusion && colour != glm::dvec3(0.0)) colour *= ambientOcclusion(local, normal, tally);  // none for no light
@@ -43,7 +45,9 @@ glm::dvec3 Medium::shade(const glm::dvec3& tc, const glm::dvec3& local, const gl
     // lighting_surface: lit by w = 1 - exp(-|g| / (0.05 G)), G = the TF window per smallest spacing.
     const double surfaceGradient = 0.05 * (domainMax - domainMin) / unitLength;
     double w = surfaceGradient > 0.0 ? -std::expm1(-glm::length(gradient) / surfaceGradient) : 1.0;
-    if (!(w >= 0.0)) w = 1.0;  // a non-finite gradient: lit, as its normal is
+    // A NaN gradient (a NaN voxel among its taps) tells nothing of a boundary: unlit, as the GPU's
+    // Shading/lighting_surface; an infinite one is the steepest boundary: lit.
+    if (std::isnan(w)) w = 0.0;
     return albedo + w * (colour - albedo);
 }
 
