@@ -75,6 +75,10 @@
 #   --volren PATH      the binary (default build/bin/volren)
 #   --dry-run          list the mutants (report.tsv with result `planned`), run nothing
 #   --no-sanity        skip the sanity mutant
+#   --modelled         sweep only the compositions whose every implementation the CPU reference
+#                      models (`volren permutations --modelled`): each of them is compared with
+#                      the reference, so changed values are seen; an implementation the
+#                      reference does not model is then only reached by the --count fallback
 #
 # How long
 #   Per mutant, one volren run (measured on 2 cores, Dec 2026): ~10 s to enumerate the 0/1 space
@@ -115,6 +119,7 @@ ap.add_argument("--timeout", type=float, default=0.0)
 ap.add_argument("--volren", default=os.path.join(ROOT, "build", "bin", "volren"))
 ap.add_argument("--dry-run", action="store_true")
 ap.add_argument("--no-sanity", action="store_true")
+ap.add_argument("--modelled", action="store_true")
 args = ap.parse_args(sys.argv[2:])
 ops = [o.strip() for o in args.ops.split(",") if o.strip()]
 for o in ops:
@@ -364,6 +369,7 @@ def sweep_args(rel, fallback=False):
         a += ["--where", "%s=%s" % (slot, name)] + (["--count", str(args.count)] if fallback else ["--pairwise"])
     else:
         a += ["--pairwise"]
+    if args.modelled and not fallback: a += ["--modelled"]
     return a
 
 def run_volren(vargs, overlay, log, timeout):
