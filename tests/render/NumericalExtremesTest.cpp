@@ -286,7 +286,9 @@ TEST_F(NumericalExtremes, NaNVoxelsUnderLightingShadeTheirNeighboursAsAZeroGradi
     // the GPU's pixel went black, the reference's went NaN: 0.068 apart.) Samples at a quarter
     // voxel from the voxel centres keep every interpolation weight away from 0. The NaN voxels
     // are two voxels from the border or more: one at y = 1 makes the two renderers' opacity
-    // differ by 0.012 on the border row, with or without lighting (not understood yet).
+    // differ by 0.012 on the border row, with or without lighting, where the GPU is the more
+    // transparent: most likely llvmpipe clamps the coordinate to the border texel's centre and
+    // still lerps towards the next texel with weight 0, and 0 * NaN is NaN.
     osg::ref_ptr<Volume> v = rampAlongZ(VoxelType::Float32, {8, 8, 16}, 0.0, 1.0);
     auto* f = reinterpret_cast<float*>(v->data());
     for (const osg::Vec3i& at : {osg::Vec3i(4, 4, 8), osg::Vec3i(2, 5, 11), osg::Vec3i(5, 2, 4)})
