@@ -89,9 +89,11 @@ PermutationSpace::PermutationSpace(const ShaderFunctionRegistry& registry, unsig
     // they call), and once no undecided slot is reached the rest are null. Every candidate is
     // then checked by the policy, and the valid ones are kept as their ranks in the cross
     // product's order (the first factor fastest), so an index names the same composition as an
-    // odometer over all factors would. The root of the search is the RaySetup (nothing else is
-    // reached before it): per RaySetup value the ranks are collected by light count, sorted and
-    // compressed into a segment, so only one RaySetup's ranks are ever held uncompressed.
+    // odometer over all factors would. The root of the search is the RaySetup and the
+    // RayTraversal, the two most significant slots (the RaySetup is reached first; the
+    // traversal is decided with it, and a candidate whose RaySetup does not reach a chosen
+    // traversal is one the policy rejects): per pair the ranks are collected by light count,
+    // sorted and compressed into a segment, so only one pair's ranks are ever held uncompressed.
     const std::size_t slotCount = functions.size();
     std::vector<std::vector<std::uint32_t>> calls(slotCount);  // per factor value: the slots it calls
     std::vector<int> nullValue(slotCount, -1);                   // the value that is no implementation
@@ -117,10 +119,13 @@ PermutationSpace::PermutationSpace(const ShaderFunctionRegistry& registry, unsig
     std::vector<std::uint8_t> choice(_factors.size(), 0);
     SlotFunctions chosen(slotCount);
     std::vector<std::vector<std::uint64_t>> byLights(_factors.back().values.size());  // one RaySetup's ranks
-    const std::size_t setup = std::size_t(std::find_if(slots().begin(), slots().end(), [](const SlotInfo& s) {
-                                                           return s.name == "RaySetup";
-                                                       }) -
-                                          slots().begin());
+    auto slotNamed = [](const char* name) {
+        return std::size_t(std::find_if(slots().begin(), slots().end(), [&](const SlotInfo& s) { return s.name == name; }) -
+                           slots().begin());
+    };
+    const std::size_t setup = slotNamed("RaySetup"), traversal = slotNamed("RayTraversal");
+    if (setup + 1 != slotCount || traversal + 2 != slotCount)
+        throw std::logic_error("PermutationSpace: RaySetup and RayTraversal must be the two most significant slots");
     std::function<void(std::uint32_t, std::uint32_t)> decide = [&](std::uint32_t decided, std::uint32_t reached) {
         const std::uint32_t open = reached & ~decided;
         if (open) {
@@ -143,24 +148,32 @@ PermutationSpace::PermutationSpace(const ShaderFunctionRegistry& registry, unsig
             for (std::size_t n = 0; n < _factors.back().values.size(); ++n)
                 if (CompositionPolicy::lightCountFits(*use, unsigned(n))) byLights[n].push_back(rank + n * weight.back());
     };
-    // Segments in index order: light count first (the most significant factor), then RaySetup.
+    // Segments in index order: light count first (the most significant factor), then RaySetup,
+    // then RayTraversal.
     std::vector<std::vector<Segment>> segments(byLights.size());
+    const std::uint32_t root = std::uint32_t(1) << setup | std::uint32_t(1) << traversal;
     for (std::size_t v = 0; v < functions[setup].size(); ++v) {
-        choice[setup] = std::uint8_t(v);
-        decide(std::uint32_t(1) << setup, std::uint32_t(1) << setup | calls[setup][v]);
-        for (std::size_t n = 0; n < byLights.size(); ++n) {
-            std::vector<std::uint64_t>& ranks = byLights[n];
-            std::sort(ranks.begin(), ranks.end());
-            Segment& segment = segments[n].emplace_back();
-            segment.offsets.reserve(ranks.size());
-            for (std::size_t k = 0; k < ranks.size(); ++k) {
-                // A new block every 4096 compositions, or where the offset would not fit 32 bits.
-                if (segment.blocks.empty() || k - segment.blocks.back().first >= 4096 ||
-                    ranks[k] - segment.blocks.back().base > std::numeric_limits<std::uint32_t>::max())
-                    segment.blocks.push_back({k, ranks[k]});
-                segment.offsets.push_back(std::uint32_t(ranks[k] - segment.blocks.back().base));
+        for (std::size_t t = 0; t < functions[traversal].size(); ++t) {
+            // A traversal the RaySetup does not call is null, as for any slot nothing reaches.
+            const bool reached = calls[setup][v] & std::uint32_t(1) << traversal;
+            if (!reached && int(t) != nullValue[traversal]) continue;
+            choice[setup] = std::uint8_t(v);
+            choice[traversal] = std::uint8_t(t);
+            decide(root, root | calls[setup][v] | (reached ? calls[traversal][t] : 0));
+            for (std::size_t n = 0; n < byLights.size(); ++n) {
+                std::vector<std::uint64_t>& ranks = byLights[n];
+                std::sort(ranks.begin(), ranks.end());
+                Segment& segment = segments[n].emplace_back();
+                segment.offsets.reserve(ranks.size());
+                for (std::size_t k = 0; k < ranks.size(); ++k) {
+                    // A new block every 4096 compositions, or where the offset would not fit 32 bits.
+                    if (segment.blocks.empty() || k - segment.blocks.back().first >= 4096 ||
+                        ranks[k] - segment.blocks.back().base > std::numeric_limits<std::uint32_t>::max())
+                        segment.blocks.push_back({k, ranks[k]});
+                    segment.offsets.push_back(std::uint32_t(ranks[k] - segment.blocks.back().base));
+                }
+                std::vector<std::uint64_t>().swap(ranks);
             }
-            std::vector<std::uint64_t>().swap(ranks);
         }
     }
     for (std::vector<Segment>& lights : segments)
