@@ -16,8 +16,9 @@ long loopIterationLimit();
 /// context's step, and the one sample after it.
 double viewSamplesPerRay(const BindContext& context);
 
-/// Throws, naming the volume, its step and the limit, when the view ray alone may take more
-/// loop iterations than loopIterationLimit() allows (its tail would be cut off).
+/// Throws, naming the volume, its step and the limit, when the view ray may take more loop
+/// iterations than loopIterationLimit() allows (its tail would be cut off): its samples times
+/// the iterations the chosen implementations declare per sample (ShaderFunction::loops).
 void checkViewRayWithinLoopLimit(const BindContext& context);
 
 /// The step of a shadow march per lit sample towards each light, `step` or longer: the

@@ -139,6 +139,14 @@ struct CompileContext
 /// the compositor emits the declarations listed here, once per program (per instance for
 /// template slots, with the instance suffix). Built with named fields:
 /// `{.slot = "Illumination", .name = "lambert", .traits = {.calls = SlotList{}}}`.
+/// Loop iterations an implementation's own loops take per view sample, at most: for drivers
+/// that end a pixel's loops after a fixed number of iterations (LoopBudget.h).
+struct LoopCost
+{
+    double perSample = 0.0;  ///< per view sample it is called for
+    double perLight = 0.0;   ///< per view sample and light
+};
+
 struct ShaderFunction
 {
     std::string slot = {};                   ///< slot name, e.g. "RayTraversal"
@@ -170,6 +178,9 @@ struct ShaderFunction
     /// Its rows in `volren bench`'s default matrix: each chooses it, with these settings on top
     /// (an empty row: it alone). None: the bench measures it only when asked.
     std::vector<BenchRow> benchRows = {};
+    /// Its loops' iterations per view sample, at most, for the bound context (a lit Shading's
+    /// light loop, a shadow march, cones). Unset: it loops over nothing of that size.
+    std::function<LoopCost(const BindContext&)> loops = {};
     /// Classification: makes, for a binding, the CPU mirror of its opacity over texel values: a
     /// predicate false only when every texel value in [lo, hi] classifies to zero opacity (used
     /// for empty-space skipping while that binding lasts). Unset: unknown, nothing is skipped.

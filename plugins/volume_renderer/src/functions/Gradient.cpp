@@ -29,7 +29,13 @@ void registerGradientFunctions(ShaderFunctionRegistry& registry)
                       // The cheapest and the widest against the default (central).
                       .benchRows = name == std::string("forward") || name == std::string("central9")
                                        ? std::vector<BenchRow>{{}}
-                                       : std::vector<BenchRow>{}});
+                                       : std::vector<BenchRow>{},
+                      // central9's 3x3 loops per lit sample (where the compiler keeps them loops).
+                      .loops = name == std::string("central9")
+                                   ? std::function<LoopCost(const BindContext&)>([](const BindContext&) {
+                                         return LoopCost{.perSample = 12.0};
+                                     })
+                                   : std::function<LoopCost(const BindContext&)>()});
 }
 
 }  // namespace volren

@@ -29,7 +29,8 @@ ShaderFunction lit(const std::string& name, const std::string& model, std::vecto
             .traits = {.calls = SlotList{"Gradient", "Illumination", "Shadowing"},
                        .required = {"Illumination"},
                        .lights = LightUse::Required},
-            .reference = ReferenceModel::exact(model)};
+            .reference = ReferenceModel::exact(model),
+            .loops = [](const BindContext&) { return LoopCost{.perLight = 1.0}; }};  // the light loop
 }
 
 /// What the debug shading shows, in the order of its GLSL switch (volren_debugView).

@@ -189,7 +189,10 @@ void registerShadowingFunctions(ShaderFunctionRegistry& registry)
                              .clipsPerSample = true,
                              .aliases = {"shadowray", "shadow_ray", "rays"}},
                   // The definition itself: the transmittance to each light, marched.
-                  .reference = ReferenceModel::exact("exact shadows")});
+                  .reference = ReferenceModel::exact("exact shadows"),
+                  // At least one step per light; its bind lengthens the step to fit the rest
+                  // of a pixel's loop budget (shadowStepWithinLoopLimit).
+                  .loops = [](const BindContext&) { return LoopCost{.perLight = 1.0}; }});
 
     // Propagated light volume: each light's transmittance in a half-float volume, built on the GPU
     // slice by slice (light_volume_build.comp) whenever the light, the TF, the volume or a clip
@@ -261,6 +264,23 @@ void registerShadowingFunctions(ShaderFunctionRegistry& registry)
     };
     std::vector<ParameterDecl> withAoDistance = coneParameters;
     withAoDistance.push_back(aoDistance);
+    // Steps of a cone over `distance` world units, at most (cone_march.glsl): each at least the
+    // shadow step and coneStepGrowth voxels of the sampled level (the chain's finest voxel is
+    // no smaller), 4096 at most.
+    auto coneSteps = [](const BindContext& c, double distance) {
+        const double voxel = std::ldexp(c.volume.minSpacing(), c.lod);
+        const double step = std::max(c.sampleDistance * c.settings.number("shadowStepFactor"),
+                                     c.settings.number("coneStepGrowth") * voxel);
+        return std::min(4096.0, std::ceil(distance / std::max(step, 1e-30)) + 1.0);
+    };
+    const std::function<LoopCost(const BindContext&)> coneLoops = [coneSteps](const BindContext& c) {
+        return LoopCost{.perLight = coneSteps(c, c.volume.worldSize().length())};
+    };
+    const std::function<LoopCost(const BindContext&)> coneAoLoops = [coneSteps](const BindContext& c) {
+        // and five occlusion cones per sample
+        const double ao = c.settings.number("aoDistance") * std::ldexp(c.volume.minSpacing(), c.lod);
+        return LoopCost{.perSample = 5.0 * coneSteps(c, ao), .perLight = coneSteps(c, c.volume.worldSize().length())};
+    };
     for (const char* name : {"cone", "cone_ao"})
         registry.add({.slot = "Shadowing",
                       .name = name,
@@ -280,7 +300,8 @@ void registerShadowingFunctions(ShaderFunctionRegistry& registry)
                       // Filtered opacity along a cone: within 5e-3 on MultiVolumeShadows' soft blobs;
                       // 0.11 on the composition sweep's dense lit shell (SweepHarness.cpp).
                       .reference = ReferenceModel::approximate(
-                          std::string(name) == "cone" ? "exact shadows" : "exact shadows and occlusion", 0.13)});
+                          std::string(name) == "cone" ? "exact shadows" : "exact shadows and occlusion", 0.13),
+                      .loops = std::string(name) == "cone" ? coneLoops : coneAoLoops});
 }
 
 }  // namespace volren

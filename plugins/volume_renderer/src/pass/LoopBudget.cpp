@@ -1,6 +1,7 @@
 #include <volume_renderer/BindContext.h>
 #include <volume_renderer/GraphicsDriver.h>
 #include <volume_renderer/LoopBudget.h>
+#include <volume_renderer/ShaderFunctionRegistry.h>
 
 #include <volume_model/Volume.h>
 #include <volume_model/VolumeNode.h>
@@ -31,6 +32,21 @@ std::string volumeName(const BindContext& context)
     return "'" + context.node.getName() + "'";
 }
 
+/// Loop iterations per view sample of the composition being bound (its implementations'
+/// declared LoopCost: the march's own one, the lit shading's light loop, shadows, cones),
+/// leaving out slot `except`'s.
+double iterationsPerSample(const BindContext& context, const std::string& except = {})
+{
+    double perSample = 1.0, perLight = 0.0;
+    for (const auto& [slot, name] : context.chosen)
+        if (const ShaderFunction* f = ShaderFunctionRegistry::instance().find(slot, name); f && f->loops && slot != except) {
+            const LoopCost cost = f->loops(context);
+            perSample += cost.perSample;
+            perLight += cost.perLight;
+        }
+    return perSample + double(context.lights.size()) * perLight;
+}
+
 }  // namespace
 
 long loopIterationLimit()
@@ -48,13 +64,15 @@ void checkViewRayWithinLoopLimit(const BindContext& context)
 {
     const long limit = loopIterationLimit();
     if (limit == 0 || !(context.sampleDistance > 0.0)) return;
-    const double samples = viewSamplesPerRay(context);
-    if (samples <= plannedShare * double(limit)) return;
+    const double samples = viewSamplesPerRay(context), perSample = iterationsPerSample(context);
+    if (samples * perSample <= plannedShare * double(limit)) return;
     std::ostringstream why;
     why << "volume " << volumeName(context) << ": a ray through its box may take " << samples
-        << " samples at a step of " << context.sampleDistance << " world units, and this driver (" << graphicsDriver()
+        << " samples at a step of " << context.sampleDistance << " world units, " << perSample
+        << " loop iterations each (its lights, shadows, cones), and this driver (" << graphicsDriver()
         << ") ends a pixel's loops after " << limit
-        << " iterations, so the march would stop short: choose a lower samplerate (or a longer sampleDistance)";
+        << " iterations, so the march would stop short: choose a lower samplerate (or a longer sampleDistance), "
+           "fewer lights or cheaper shadows";
     throw std::runtime_error(why.str());
 }
 
@@ -66,12 +84,14 @@ double shadowStepWithinLoopLimit(const BindContext& context, double step)
     const double diagonal = box.length();
     const double view = viewSamplesPerRay(context);
     const double lights = double(std::max<std::size_t>(1, context.lights.size()));
-    // Per view sample: its own iteration, and per light one of the light loop and the march's.
-    auto perPixel = [&](double shadowSteps) { return view * (1.0 + lights * (1.0 + shadowSteps)); };
+    // Per view sample: what the rest of the composition loops (the march, the light loop), and
+    // per light the shadow march's steps.
+    const double rest = iterationsPerSample(context, "Shadowing");
+    auto perPixel = [&](double shadowSteps) { return view * (rest + lights * shadowSteps); };
     const double budget = plannedShare * double(limit);
     const double wanted = std::min(maxShadowSteps, std::ceil(diagonal / step));
     if (perPixel(wanted) <= budget) return step;
-    const double fitting = std::floor((budget / view - 1.0) / lights - 1.0);
+    const double fitting = std::floor((budget / view - rest) / lights);
     if (fitting < 1.0) {
         std::ostringstream why;
         why << "Shadowing ray: volume " << volumeName(context) << ": " << view << " view samples per ray times "

@@ -2,6 +2,7 @@
 
 #include "../compositor/BuildSlots.h"
 
+#include <volume_renderer/GraphicsDriver.h>
 #include <volume_renderer/LoopBudget.h>
 #include <volume_renderer/SampleDistance.h>
 #include <volume_renderer/VolumeMipChain.h>
@@ -9,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <stdexcept>
 #include <string>
 
 namespace volren {
@@ -116,8 +118,13 @@ bool bindProgram(BindContext& context, const ComposedProgram& program,
         }
         const AuxBuild& build = *kind->build;
         const osg::Vec3i levelDims = mipDims(context.volume.dims(), context.lod);
-        context.aux[kind->name] =
-            textures.builtVolumes().texture(&context.node, *kind, build.dims(levelDims, context), build.channels(context), cull);
+        const osg::Vec3i dims = build.dims(levelDims, context);
+        if (exceedsLargest3DTexture(dims))  // the driver would refuse its storage with a GL error
+            throw std::runtime_error(kind->name + ": volume '" + context.node.getName() + "' needs " + std::to_string(dims.x()) +
+                                     "x" + std::to_string(dims.y()) + "x" + std::to_string(dims.z()) +
+                                     " texels, beyond this driver's largest 3D texture (" +
+                                     std::to_string(largest3DTexture()) + "): choose another implementation or a coarser level");
+        context.aux[kind->name] = textures.builtVolumes().texture(&context.node, *kind, dims, build.channels(context), cull);
     }
 
     checkViewRayWithinLoopLimit(context);  // the step is final: a brick pool may have coarsened it
