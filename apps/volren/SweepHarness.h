@@ -39,9 +39,9 @@ struct SweepVariant
     /// Changes the sweep scene (and its placed camera) to this variant; null: none.
     std::function<void(VolumeScene& scene, osg::Camera& camera)> apply = {};
     /// The compositions that must refuse this scene with a clear error (a `compose` failure
-    /// whose message holds `refusal`) instead of drawing it; null: none.
+    /// whose message holds one of `refusals`) instead of drawing it; null: none.
     std::function<bool(const Composition&)> refuses = {};
-    std::string refusal = {};
+    std::vector<std::string> refusals = {};
 };
 
 /// The plain sweep scene, and with `extremes` the parameter extremes beside it: 8- and 16-bit
