@@ -51,8 +51,9 @@
 #   tool stops.
 #
 # Spaces (--space)
-#   The sweep's default space (max 1 clip instance, 1 light: ~42M compositions) takes ~2.2 min
-#   to enumerate per volren run on a loaded 2-core machine, before anything renders (a full-space
+#   The sweep's default space (max 1 clip instance, 1 light: ~42M compositions) took ~2.2 min
+#   to enumerate per volren run on a loaded 2-core machine before commit 67f8db4 (about 50 s
+#   since, unloaded), before anything renders (a full-space
 #   `--where` without `--pairwise` scans it: ~3.3 min). `auto` (default) runs each file in the
 #   smallest space that reaches it: `0/1` (no clip instances, up to 1 light: 2.8M compositions,
 #   ~10 s) for everything but the clip slots, which get `1/0` (580K, but ~65 s). `full` is the
