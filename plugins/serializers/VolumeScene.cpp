@@ -1,12 +1,15 @@
 // volren::VolumeScene: the pass settings (`lighting`, `forceNullAll`), written as key/value
 // pairs through PassSettings::keys()/get()/set() so new pass settings are saved without
-// touching this file. Children come from the osg::Group wrapper. `forcedComposition` is a
+// touching this file (those PassSettings::isSaved names: a debug output only while on). Children come from the osg::Group wrapper. `forcedComposition` is a
 // testing hook (permutation sweeps) and is not saved.
 #include "StreamFields.h"
 
 #include <volume_renderer/VolumeScene.h>
 
 #include <osgDB/ObjectWrapper>
+
+#include <string>
+#include <vector>
 
 namespace {
 
@@ -17,12 +20,14 @@ bool checkPassSettings(const VolumeScene&) { return true; }
 
 bool writePassSettings(osgDB::OutputStream& os, const VolumeScene& scene)
 {
-    const auto keys = volren::PassSettings::keys();
-    writeInt(os, std::int64_t(keys.size()));
+    std::vector<std::string> saved;
+    for (const auto& entry : volren::PassSettings::keys())
+        if (scene.pass.isSaved(entry.first)) saved.push_back(entry.first);
+    writeInt(os, std::int64_t(saved.size()));
     os << os.BEGIN_BRACKET << std::endl;
-    for (const auto& entry : keys) {
-        os << entry.first;  // an identifier: a bare word
-        writeString(os, scene.pass.get(entry.first));
+    for (const std::string& key : saved) {
+        os << key;  // an identifier: a bare word
+        writeString(os, scene.pass.get(key));
         os << std::endl;
     }
     os << os.END_BRACKET << std::endl;

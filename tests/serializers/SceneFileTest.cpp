@@ -157,6 +157,7 @@ TestScene makeScene(const std::string& dir)
     std::string error;
     EXPECT_TRUE(s.root->pass.set("lighting", "off", error)) << error;
     EXPECT_TRUE(s.root->pass.set("forceNullAll", "Jitter,Shadowing", error)) << error;
+    EXPECT_TRUE(s.root->pass.set("countSamples", "on", error)) << error;
     s.root->setName("root");
 
     osg::ref_ptr<TransferFunction> sharedTf = rampTransferFunction();
@@ -286,8 +287,8 @@ void expectSameNode(const osg::Node& a, const osg::Node& b)
     }
     if (auto* sa = dynamic_cast<const VolumeScene*>(&a)) {
         auto& sb = dynamic_cast<const VolumeScene&>(b);
-        EXPECT_EQ(sa->pass.lighting, sb.pass.lighting);
-        EXPECT_EQ(sa->pass.forceNull, sb.pass.forceNull);
+        for (const auto& entry : PassSettings::keys())
+            EXPECT_EQ(sa->pass.get(entry.first), sb.pass.get(entry.first)) << "pass setting " << entry.first;
     }
     if (auto* ta = dynamic_cast<const osg::MatrixTransform*>(&a)) {
         EXPECT_EQ(ta->getMatrix(), dynamic_cast<const osg::MatrixTransform&>(b).getMatrix());

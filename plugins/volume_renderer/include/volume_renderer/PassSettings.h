@@ -35,6 +35,9 @@ struct PassSettings
     static std::vector<std::pair<std::string, std::string>> keys();
     /// Whether `key` names a pass setting.
     static bool isKey(const std::string& key);
+    /// Whether a scene file saves `key`: every setting, except a debug output while it is off
+    /// (countSamples), so scenes written before it existed read and write back unchanged.
+    bool isSaved(const std::string& key) const;
 };
 
 }  // namespace volren

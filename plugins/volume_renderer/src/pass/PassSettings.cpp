@@ -7,7 +7,6 @@
 
 namespace volren {
 
-
 std::vector<std::pair<std::string, std::string>> PassSettings::keys()
 {
     return {{"lighting", "on/off: off ignores the scene's lights, so the lighting slots become null"},
@@ -24,6 +23,11 @@ bool PassSettings::isKey(const std::string& key)
     for (const auto& entry : keys())
         if (entry.first == key) return true;
     return false;
+}
+
+bool PassSettings::isSaved(const std::string& key) const
+{
+    return isKey(key) && (key != "countSamples" || countSamples);
 }
 
 std::string PassSettings::get(const std::string& key) const
