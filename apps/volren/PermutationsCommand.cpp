@@ -289,7 +289,7 @@ std::vector<SweepFailure> renderOne(const Composition& composition, std::size_t 
     auto& settings = static_cast<VolumeNode*>(scene.getChild(0))->settings;
     const double termination = settings.earlyTerminationThreshold;
     for (const Variant& v : variantsOf(composition, policy)) {
-        if (o.limits.refuses && o.limits.refuses(v.composition)) continue;  // refuses this scene: nothing to compare
+        if (o.limits.refuses && o.limits.refuses(v.composition, scene)) continue;  // refuses this scene: nothing to compare
         if (v.withoutEarlyTermination) settings.earlyTerminationThreshold = 1.0;
         const osg::ref_ptr<osg::Image> original = v.withoutEarlyTermination ? frame(composition, false).second : image;
         auto [variantFailures, variant] = frame(v.composition, false);
@@ -395,7 +395,7 @@ int permutationsCommand(const std::vector<std::string>& args)
             } catch (const std::exception& e) {
                 failures.push_back({"compose", e.what()});
             }
-            if (variant.refuses && variant.refuses(composition)) {  // it must fail with a refusal, and only so
+            if (variant.refuses && variant.refuses(composition, *scene)) {  // it must fail with a refusal, and only so
                 bool refused = failures.size() == 1 && failures[0].check == "compose";
                 if (refused)
                     refused = std::any_of(variant.refusals.begin(), variant.refusals.end(), [&](const std::string& r) {

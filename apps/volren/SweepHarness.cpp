@@ -1,6 +1,10 @@
 #include "SweepHarness.h"
 
+#include <volume_renderer/AuxKind.h>
+#include <volume_renderer/BindContext.h>
+#include <volume_renderer/GraphicsDriver.h>
 #include <volume_renderer/LoopBudget.h>
+#include <volume_renderer/SampleDistance.h>
 #include <volume_renderer/ShaderFunctionRegistry.h>
 #include <volume_renderer/Slots.h>
 
@@ -21,6 +25,8 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <map>
+#include <stdexcept>
 #include <set>
 #include <sstream>
 
@@ -191,6 +197,57 @@ void scaleScene(VolumeScene& scene, osg::Camera& camera, double s)
     placeSweepCamera(camera, s);
 }
 
+/// Runs `read` on the binding context of the sweep node of `scene` for composition `c`, with
+/// c.lightCount lights and its level 0: what the declarations' costs and sizes read.
+template <typename Read>
+auto withBindContext(const Composition& c, VolumeScene& scene, Read read)
+{
+    VolumeNode& node = sweepNode(scene);
+    osg::ref_ptr<osg::StateSet> state = new osg::StateSet;
+    const std::map<std::string, int> units;
+    BindContext context{.node = node,
+                        .volume = *node.getVolume(),
+                        .transfer = *node.getTransferFunction(),
+                        .settings = node.settings,
+                        .sampleDistance = effectiveSampleDistance(node),
+                        .stateSet = *state,
+                        .textureUnits = units,
+                        .boxSize = node.getVolume()->worldSize()};
+    context.lights.resize(std::size_t(c.lightCount), LightInfo{osg::Vec4d(0, 0, 1, 0), osg::Vec3d(1, 1, 1)});
+    for (const SlotInfo& slot : slots()) context.chosen[slot.name] = c.functionFor(slot.name);
+    return read(context);
+}
+
+/// Whether a view ray of `c` through the sweep node of `scene` takes more loop iterations than
+/// the driver lets a pixel run (LoopBudget.h): the pass refuses it, from what its
+/// implementations declare (ShaderFunction::loops).
+bool beyondTheLoopLimit(const Composition& c, VolumeScene& scene)
+{
+    return withBindContext(c, scene, [](const BindContext& context) {
+        try {
+            checkViewRayWithinLoopLimit(context);
+            return false;
+        } catch (const std::runtime_error&) {
+            return true;
+        }
+    });
+}
+
+/// Whether an implementation of `c` needs an auxiliary volume built at a size (AuxBuild::dims,
+/// for level 0 of the sweep node of `scene`) beyond the driver's largest 3D texture.
+bool needsABuiltVolumeBeyondTheLargestTexture(const Composition& c, VolumeScene& scene)
+{
+    return withBindContext(c, scene, [](const BindContext& context) {
+        const ShaderFunctionRegistry& registry = ShaderFunctionRegistry::instance();
+        for (const auto& [slot, name] : context.chosen)
+            if (const ShaderFunction* f = registry.find(slot, name))
+                for (const AuxKind* kind : registry.auxKindsOf(*f))
+                    if (kind->build && exceedsLargest3DTexture(kind->build->dims(context.volume.dims(), context)))
+                        return true;
+        return false;
+    });
+}
+
 }  // namespace
 
 std::vector<SweepVariant> sweepVariants(bool extremes)
@@ -216,10 +273,7 @@ std::vector<SweepVariant> sweepVariants(bool extremes)
                         // 35,100 view samples through the ball, and lit ones at least a light loop's
                         // iteration more per sample: over 70,000 iterations a pixel, beyond a driver
                         // that ends a pixel's loops after 65,535 (llvmpipe).
-                        .refuses =
-                            [](const Composition& c) {
-                                return loopIterationLimit() > 0 && loopIterationLimit() < 70000 && c.lightCount > 0;
-                            },
+                        .refuses = beyondTheLoopLimit,
                         .refusals = {"loop iterations"}});
     add("spacing 1e-9", [](VolumeScene& s, osg::Camera& c) { scaleScene(s, c, 2e-9); });
     add("spacing 1e12", [](VolumeScene& s, osg::Camera& c) { scaleScene(s, c, 2e12); });
@@ -227,19 +281,16 @@ std::vector<SweepVariant> sweepVariants(bool extremes)
     variants.push_back({.name = "4096x4x4 volume",
                         .apply = [](VolumeScene& s, osg::Camera&) { resample(s, {4096, 4, 4}); },
                         // Beyond the largest 3D texture of every driver of today's kind: a storage
-                        // that does not keep within the limits (traits.withinBudget) refuses it,
-                        // and so do the cones' opacity mip chain, built at the sampled level's size.
+                        // that does not keep within the limits (traits.withinBudget) refuses it, and
+                        // so does a built auxiliary volume at the sampled level's size (the cones'
+                        // opacity mip chain). 11,982 view samples (a step of half its 0.003-unit
+                        // spacing) and central-9's 12 taps per lit sample: beyond 65,535 iterations.
                         .refuses =
-                            [](const Composition& c) {
+                            [](const Composition& c, VolumeScene& s) {
                                 const ShaderFunction* storage =
                                     ShaderFunctionRegistry::instance().find("VolumeStorage", c.functionFor("VolumeStorage"));
-                                const std::string shadowing = c.functionFor("Shadowing");
-                                // 11,982 view samples (a step of half its 0.003-unit spacing), and 12
-                                // more iterations per lit sample for central-9's taps: beyond 65,535.
-                                const bool loops = loopIterationLimit() > 0 && loopIterationLimit() < 180000 &&
-                                                   c.lightCount > 0 && c.functionFor("Gradient") == "central9";
                                 return (storage && !storage->traits.withinBudget && !storage->needs.empty()) ||  // null reads nothing
-                                       shadowing == "cone" || shadowing == "cone_ao" || loops;
+                                       needsABuiltVolumeBeyondTheLargestTexture(c, s) || beyondTheLoopLimit(c, s);
                             },
                         .refusals = {"beyond this driver's largest 3D texture", "loop iterations"}});
     add("camera inside", [](VolumeScene&, osg::Camera& c) {

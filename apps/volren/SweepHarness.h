@@ -39,8 +39,9 @@ struct SweepVariant
     /// Changes the sweep scene (and its placed camera) to this variant; null: none.
     std::function<void(VolumeScene& scene, osg::Camera& camera)> apply = {};
     /// The compositions that must refuse this scene with a clear error (a `compose` failure
-    /// whose message holds one of `refusals`) instead of drawing it; null: none.
-    std::function<bool(const Composition&)> refuses = {};
+    /// whose message holds one of `refusals`) instead of drawing it, judged on the scene as
+    /// `apply` left it; null: none.
+    std::function<bool(const Composition&, VolumeScene&)> refuses = {};
     std::vector<std::string> refusals = {};
 };
 
@@ -63,7 +64,7 @@ struct SweepLimits
     double frameMs = 30000.0;  ///< the longest a frame (compile and link included) may take
     bool drawn = true;         ///< the scene shows its volume (SweepVariant::showsVolume)
     /// Compositions that refuse the scene (SweepVariant::refuses): not drawn as variants.
-    std::function<bool(const Composition&)> refuses = {};
+    std::function<bool(const Composition&, VolumeScene&)> refuses = {};
 };
 
 /// A composition that must draw the same image as another, within `tolerance` (largest absolute
