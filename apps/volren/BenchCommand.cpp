@@ -151,7 +151,7 @@ struct BenchOptions
     std::vector<std::string> only;  ///< config names to run (empty: all)
     double tolerance = 1e-3;
     bool vtk = false;
-    bool checkFront = false;  ///< fail when a row beats the default on both axes
+    bool checkFront = false;  ///< fail when a row beats the default (BenchFront.h)
     bool listConfigs = false;  ///< print the configurations' names and settings, run none
     std::string tf;           ///< --tf FILE: every volume's transfer function (as volren render's)
     ReferenceOptions::Gradient normals = ReferenceOptions::Gradient::CentralDifferences;

@@ -24,6 +24,21 @@ void markPareto(std::vector<BenchRow>& rows)
     }
 }
 
+namespace {
+
+/// Whether `a` beats `b`: better on one axis beyond the noise, and not worse beyond it on the
+/// other: as accurate and faster beats (weak domination), as fast and more accurate does.
+/// Images are deterministic: RMSE within 1 % is the same error.
+bool beats(const BenchRow& a, const BenchRow& b)
+{
+    const double timeMargin = std::max(2.0 * (a.frameNoiseMs + b.frameNoiseMs), 0.02 * b.frameMs);
+    const bool faster = a.frameMs < b.frameMs - timeMargin, notSlower = a.frameMs <= b.frameMs + timeMargin;
+    const bool moreAccurate = a.error.rmse < 0.95 * b.error.rmse, asAccurate = a.error.rmse <= 1.01 * b.error.rmse;
+    return (faster && asAccurate) || (moreAccurate && notSlower);
+}
+
+}  // namespace
+
 std::vector<const BenchRow*> markRowsBeatingTheDefault(std::vector<BenchRow>& rows)
 {
     std::vector<const BenchRow*> out;
@@ -33,13 +48,8 @@ std::vector<const BenchRow*> markRowsBeatingTheDefault(std::vector<BenchRow>& ro
             if (&r == &d || r.renderer != "volren" || r.dataset != d.dataset || r.width != d.width ||
                 r.height != d.height || r.truth != d.truth)
                 continue;
-            // Better on one axis beyond the noise, and not worse beyond it on the other: a row as
-            // accurate and faster beats the default (weak domination), as one as fast and more
-            // accurate does. Images are deterministic: RMSE within 1 % is the same error.
-            const double timeMargin = std::max(2.0 * (r.frameNoiseMs + d.frameNoiseMs), 0.02 * d.frameMs);
-            const bool faster = r.frameMs < d.frameMs - timeMargin, notSlower = r.frameMs <= d.frameMs + timeMargin;
-            const bool moreAccurate = r.error.rmse < 0.95 * d.error.rmse, asAccurate = r.error.rmse <= 1.01 * d.error.rmse;
-            r.beatsDefault = (faster && asAccurate) || (moreAccurate && notSlower);
+            r.beatsDefault = beats(r, d);
+            r.beatenByDefault = beats(d, r);
             if (r.beatsDefault) out.push_back(&r);
         }
     }

@@ -15,7 +15,8 @@ void markPareto(std::vector<BenchRow>& rows);
 /// axis beyond the run's noise and not worse beyond it on the other. Time: faster by more than
 /// twice the two rows' frame-time deviations (and 2 % of the default's time), not slower when
 /// within that margin. Error: an RMSE lower by more than 5 %, as accurate when within 1 %.
-/// Returns them.
+/// Marks too the rows the default beats by the same rule (BenchRow::beatenByDefault). Returns
+/// the rows that beat it.
 std::vector<const BenchRow*> markRowsBeatingTheDefault(std::vector<BenchRow>& rows);
 
 }  // namespace volren::app

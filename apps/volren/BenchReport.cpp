@@ -89,7 +89,8 @@ void writeJson(const BenchReport& report, const std::string& path)
                         {"config", r.config}, {"truth", r.truth}, {"frame_ms", r.frameMs}, {"gpu_ms", r.gpuMs},
                         {"cpu_ms", r.cpuMs}, {"texture_mb", r.textureMb}, {"gpu_memory_mb", r.gpuMemoryMb},
                         {"rmse", r.error.rmse}, {"max_abs", r.error.maxAbs}, {"psnr_db", r.error.psnr},
-                        {"pareto", r.pareto}, {"beats_default", r.beatsDefault}, {"composition_keys", r.keys},
+                        {"pareto", r.pareto}, {"beats_default", r.beatsDefault},
+                        {"beaten_by_default", r.beatenByDefault}, {"composition_keys", r.keys},
                         {"light_move_ms", r.lightMoveMs}, {"rebuild_ms", r.rebuildMs},
                         {"aux_bytes_per_voxel", r.auxBytesPerVoxel}});
     nlohmann::json doc = {{"context", report.context}, {"timing_note", report.timingNote}, {"rows", rows}};

@@ -40,7 +40,9 @@ struct BenchRow
     ImageError error;
     std::vector<std::string> keys;  ///< composition keys drawn
     bool pareto = false;            ///< on the speed/accuracy Pareto front of its dataset and size
-    bool beatsDefault = false;      ///< faster and more accurate than the default beyond the noise
+    /// Better than the default on one axis beyond the run's noise, not worse on the other.
+    bool beatsDefault = false;
+    bool beatenByDefault = false;   ///< the default beats it by the same rule
 };
 
 struct BenchReport

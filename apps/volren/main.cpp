@@ -51,8 +51,9 @@ const std::vector<std::pair<std::string, std::string>>& commandUsages()
         {"bench",
          "  volren bench [DATASET ...] [--size WxH[,WxH...]] [--frames N] [--out DIR] [--configs 'A;B'] [--vtk] [--tf FILE]\n"
          "                [--tolerance T] [--normals central|exact] [--check-front] [--list-configs]   speed against\n"
-         "                accuracy: table, CSV, JSON, plot; --check-front fails when a row beats the default on both\n"
-         "                axes; --list-configs prints the matrix (settings, then each implementation's declared rows);\n"
+         "                accuracy: table, CSV, JSON, plot; --check-front fails when a row beats the default (better on\n"
+         "                one axis beyond the noise, not worse on the other); --list-configs prints the matrix (settings,\n"
+         "                then each implementation's declared rows);\n"
          "                DATASET: an input, or inputs joined by '+' (ct.nii.gz+tool.obj) measured as one scene\n"},
         {"permutations",
          "  volren permutations [--list] [--compile | --render] [--pairwise] [--max-instances N]\n"

@@ -31,11 +31,17 @@ TEST(BenchFront, ARowBetterOnOneAxisAndNotWorseOnTheOtherBeyondTheNoiseBeatsIt)
                                   row("barely-better", 97, 0.0097),    // 3 ms (margin 4 ms), RMSE 3 % lower
                                   row("faster-worse", 70, 0.0102),     // 2 % less accurate
                                   row("slower", 120, 0.002),
-                                  row("other-picture", 50, 0.001, 1.0, "unlit")};
+                                  row("other-picture", 50, 0.001, 1.0, "unlit"),
+                                  row("slow-twin", 130, 0.010),        // the default beats it: faster, as accurate
+                                  row("worse-twin", 101, 0.012)};      // and as fast, more accurate
     const std::vector<const BenchRow*> beaten = markRowsBeatingTheDefault(rows);
     ASSERT_EQ(beaten.size(), 3u);
     const std::set<std::string> beats = {"fast-and-good", "same-error", "as-fast"};
-    for (const BenchRow& r : rows) EXPECT_EQ(r.beatsDefault, beats.count(r.config) == 1) << r.config;
+    const std::set<std::string> beatenByDefault = {"slow-twin", "worse-twin"};
+    for (const BenchRow& r : rows) {
+        EXPECT_EQ(r.beatsDefault, beats.count(r.config) == 1) << r.config;
+        EXPECT_EQ(r.beatenByDefault, beatenByDefault.count(r.config) == 1) << r.config;
+    }
 
     markPareto(rows);
     auto front = [&](const std::string& name) {
