@@ -4,6 +4,6 @@
 vec4 volren_classify(float scalar)
 {
     if (isnan(scalar)) return vec4(0.0);
-    float u = clamp(scalar * volren_window.x + volren_window.y, 0.0, 1.0);
+    float u = clamp(scalar * volren_window.x * volren_window.z + volren_window.y, 0.0, 1.0);
     return vec4(u, u, u, u);
 }

@@ -19,6 +19,6 @@ vec4 volren_traverse(vec3 origin, vec3 dir, float tNear, float tFar, float jitte
         }
     }
     float u = clamp(best / max(volren_gradientScale, 1e-30), 0.0, 1.0);
-    vec4 c = volren_classify((u - volren_window.y) / volren_window.x);  // u as a windowed scalar
+    vec4 c = volren_classify((u - volren_window.y) / volren_window.z / volren_window.x);  // u as a windowed scalar
     return vec4(c.rgb * c.a, c.a);
 }

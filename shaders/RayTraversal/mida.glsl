@@ -18,7 +18,7 @@ vec4 volren_traverse(vec3 origin, vec3 dir, float tNear, float tFar, float jitte
         if (lenT > 0.0 && !volren_clipPosition(p)) {
             float s = volren_fetchScalar(p);
             if (!isnan(s)) {
-                float u = clamp(s * volren_window.x + volren_window.y, 0.0, 1.0);
+                float u = clamp(s * volren_window.x * volren_window.z + volren_window.y, 0.0, 1.0);
                 float delta = u > maximum ? u - maximum : 0.0;
                 maximum = max(maximum, u);
                 float beta = 1.0 - delta;

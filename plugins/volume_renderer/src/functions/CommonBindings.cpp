@@ -10,6 +10,8 @@
 #include <volume_model/Volume.h>
 #include <volume_model/VolumeNode.h>
 
+#include <cmath>
+
 namespace volren::bindings {
 
 const std::vector<UniformDecl> geometry = {{"volren_worldSize", "vec3", ""}, {"volren_dims", "vec3", ""}};
@@ -23,7 +25,7 @@ void bindGeometry(BindContext& c)
     c.uniform("volren_dims", osg::Vec3f(float(d.x()), float(d.y()), float(d.z())));
 }
 
-const std::vector<UniformDecl> window = {{"volren_window", "vec2", ""}, {"volren_tfResolution", "float", ""}};
+const std::vector<UniformDecl> window = {{"volren_window", "vec3", ""}, {"volren_tfResolution", "float", ""}};
 
 std::pair<double, double> windowOf(const BindContext& c)
 {
@@ -41,7 +43,11 @@ std::pair<double, double> windowMap(const BindContext& c)
 void bindWindow(BindContext& c)
 {
     const auto [scale, offset] = windowMap(c);
-    c.uniform("volren_window", osg::Vec2f(float(scale), float(offset)));
+    // The scale in two factors where it would be a denormal float (a window wider than 2^100:
+    // float data up to float's largest), which GPUs flush to zero: v * (scale * 2^64) * 2^-64.
+    const bool tiny = std::abs(scale) > 0.0 && std::abs(scale) < std::ldexp(1.0, -100);
+    const double split = tiny ? std::ldexp(1.0, -64) : 1.0;
+    c.uniform("volren_window", osg::Vec3f(float(scale / split), float(offset), float(split)));
     c.uniform("volren_tfResolution", float(c.transfer.resolution()));
 }
 

@@ -11,7 +11,8 @@ namespace volren::bindings {
 extern const std::vector<UniformDecl> geometry;
 void bindGeometry(BindContext& c);
 
-/// volren_window (vec2: texel value -> TF window [0,1]) and volren_tfResolution (float).
+/// volren_window (vec3: texel value v -> TF window [0,1] as v * x * z + y, the scale split
+/// into x * z where it would be a denormal float) and volren_tfResolution (float).
 extern const std::vector<UniformDecl> window;
 void bindWindow(BindContext& c);
 

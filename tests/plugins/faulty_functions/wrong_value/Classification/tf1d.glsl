@@ -5,6 +5,6 @@
 vec4 volren_classify(float scalar)
 {
     if (isnan(scalar)) return vec4(0.0);
-    float u = clamp(scalar * volren_window.x + volren_window.y, 0.0, 1.0);
+    float u = clamp(scalar * volren_window.x * volren_window.z + volren_window.y, 0.0, 1.0);
     return texture(volren_transferFunction, (u * (volren_tfResolution - 1.0) + 0.5) / volren_tfResolution).bgra;
 }
