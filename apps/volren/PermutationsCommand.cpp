@@ -354,6 +354,11 @@ int permutationsCommand(const std::vector<std::string>& args)
     // Each scene variant (only the plain sweep scene unless --extremes) draws every composition.
     for (const SweepVariant& variant : sweepVariants(o.render && o.extremes)) {
         if (!o.variant.empty() && variant.name.find(o.variant) == std::string::npos) continue;
+        if (o.variant.empty() && !variant.openDefect.empty()) {
+            std::cout << "not run: the variant '" << variant.name << "' (" << variant.openDefect
+                      << "); --variant '" << variant.name << "' runs it" << std::endl;
+            continue;
+        }
         OffscreenRenderer renderer(variant.width, variant.height);
         osg::ref_ptr<VolumeScene> scene = sweepScene();
         scene->compositor().setCacheSize(0);  // a sweep never returns to a composition: keep none

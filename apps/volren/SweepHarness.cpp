@@ -155,6 +155,23 @@ void opacityEverywhere(VolumeScene& scene, float alpha)
     sweepNode(scene).setTransferFunction(to.get());
 }
 
+/// The sweep volume's values and its TF's points scaled by one factor, so that its largest
+/// value is float's largest: the same picture, at the top of float's range.
+void scaleValuesToFloatMax(VolumeScene& scene)
+{
+    Volume& volume = *sweepNode(scene).getVolume();
+    auto* v = reinterpret_cast<float*>(volume.data());
+    const float largest = *std::max_element(v, v + volume.voxelCount());
+    const double scale = double(std::numeric_limits<float>::max()) / double(largest);
+    for (std::size_t i = 0; i < volume.voxelCount(); ++i)
+        v[i] = float(std::min(double(v[i]) * scale, double(std::numeric_limits<float>::max())));
+    volume.dirty();
+    const TransferFunction& from = *sweepNode(scene).getTransferFunction();
+    osg::ref_ptr<TransferFunction> to = new TransferFunction;
+    for (const auto& [value, rgba] : from.points()) to->setPoint(value * scale, rgba);
+    sweepNode(scene).setTransferFunction(to.get());
+}
+
 /// A volume of `dims` over the sweep volume's box, its values the sweep field's shape.
 void resample(VolumeScene& scene, const osg::Vec3i& dims)
 {
@@ -259,6 +276,7 @@ std::vector<SweepVariant> sweepVariants(bool extremes)
     };
     add("8-bit data", [](VolumeScene& s, osg::Camera&) { storeAs(s, VoxelType::UInt8, 255.0); });
     add("16-bit data", [](VolumeScene& s, osg::Camera&) { storeAs(s, VoxelType::UInt16, 65535.0); });
+    add("values to float's largest", [](VolumeScene& s, osg::Camera&) { scaleValuesToFloatMax(s); });
     add("NaN voxels", [](VolumeScene& s, osg::Camera&) {
         Volume& volume = *sweepNode(s).getVolume();
         auto* v = reinterpret_cast<float*>(volume.data());
@@ -275,6 +293,11 @@ std::vector<SweepVariant> sweepVariants(bool extremes)
                         // that ends a pixel's loops after 65,535 (llvmpipe).
                         .refuses = beyondTheLoopLimit,
                         .refusals = {"loop iterations"}});
+    variants.push_back({.name = "steps of 10 voxels",
+                        .apply = [](VolumeScene& s, osg::Camera&) { sweepNode(s).settings.sampleDistanceFactor = 10.0; },
+                        .openDefect = "#38: 13 of 13 unlit modelled compositions differ from the reference by 0.73-0.95 "
+                                      "(two or three samples a ray: pixels where the GPU's samples miss the ball and the "
+                                      "reference's hit it; their sample positions are not yet the same at coarse steps)"});
     add("spacing 1e-9", [](VolumeScene& s, osg::Camera& c) { scaleScene(s, c, 2e-9); });
     add("spacing 1e12", [](VolumeScene& s, osg::Camera& c) { scaleScene(s, c, 2e12); });
     add("1x1x1 volume", [](VolumeScene& s, osg::Camera&) { resample(s, {1, 1, 1}); });
