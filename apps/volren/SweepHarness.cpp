@@ -26,7 +26,6 @@
 #include <cstdint>
 #include <limits>
 #include <map>
-#include <stdexcept>
 #include <set>
 #include <sstream>
 
@@ -240,14 +239,7 @@ auto withBindContext(const Composition& c, VolumeScene& scene, Read read)
 /// implementations declare (ShaderFunction::loops).
 bool beyondTheLoopLimit(const Composition& c, VolumeScene& scene)
 {
-    return withBindContext(c, scene, [](const BindContext& context) {
-        try {
-            checkViewRayWithinLoopLimit(context);
-            return false;
-        } catch (const std::runtime_error&) {
-            return true;
-        }
-    });
+    return withBindContext(c, scene, [](const BindContext& context) { return !viewRayWithinLoopLimit(context); });
 }
 
 /// Whether an implementation of `c` needs an auxiliary volume built at a size (AuxBuild::dims,

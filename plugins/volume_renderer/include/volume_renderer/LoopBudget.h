@@ -16,6 +16,11 @@ long loopIterationLimit();
 /// context's step, and the one sample after it.
 double viewSamplesPerRay(const BindContext& context);
 
+/// Whether the view ray through the box being bound keeps within loopIterationLimit(): its
+/// samples times the iterations the chosen implementations declare per sample
+/// (ShaderFunction::loops), with a margin for the loops they do not declare.
+bool viewRayWithinLoopLimit(const BindContext& context);
+
 /// Throws, naming the volume, its step and the limit, when the view ray may take more loop
 /// iterations than loopIterationLimit() allows (its tail would be cut off): its samples times
 /// the iterations the chosen implementations declare per sample (ShaderFunction::loops).

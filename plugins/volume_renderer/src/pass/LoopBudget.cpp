@@ -60,12 +60,18 @@ double viewSamplesPerRay(const BindContext& context)
     return std::ceil(box.length() / context.sampleDistance) + 1.0;
 }
 
-void checkViewRayWithinLoopLimit(const BindContext& context)
+bool viewRayWithinLoopLimit(const BindContext& context)
 {
     const long limit = loopIterationLimit();
-    if (limit == 0 || !(context.sampleDistance > 0.0)) return;
+    if (limit == 0 || !(context.sampleDistance > 0.0)) return true;
+    return viewSamplesPerRay(context) * iterationsPerSample(context) <= plannedShare * double(limit);
+}
+
+void checkViewRayWithinLoopLimit(const BindContext& context)
+{
+    if (viewRayWithinLoopLimit(context)) return;
+    const long limit = loopIterationLimit();
     const double samples = viewSamplesPerRay(context), perSample = iterationsPerSample(context);
-    if (samples * perSample <= plannedShare * double(limit)) return;
     std::ostringstream why;
     why << "volume " << volumeName(context) << ": a ray through its box may take " << samples
         << " samples at a step of " << context.sampleDistance << " world units, " << perSample
